@@ -1,0 +1,9 @@
+"""Command-line commands (`blender -c water_surface ...`)."""
+
+
+def register():
+    pass
+
+
+def unregister():
+    pass

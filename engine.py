@@ -1,0 +1,18 @@
+"""Render engine identifiers, looked up in the running Blender.
+
+EEVEE is `BLENDER_EEVEE_NEXT` in 4.2-4.5 and `BLENDER_EEVEE` from 5.0; the
+add-on asks Blender instead of assuming either.
+"""
+
+import bpy
+
+_EEVEE_IDS = ("BLENDER_EEVEE_NEXT", "BLENDER_EEVEE")
+
+
+def eevee_engine_id():
+    """The identifier of EEVEE in this Blender."""
+    engines = {item.identifier for item in bpy.types.RenderSettings.bl_rna.properties["engine"].enum_items}
+    for ident in _EEVEE_IDS:
+        if ident in engines:
+            return ident
+    raise RuntimeError(f"no EEVEE render engine among {sorted(engines)}")

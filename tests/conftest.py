@@ -1,0 +1,79 @@
+"""Test set-up: the add-on is built and installed once per run, as users get it.
+
+bpy must see `BLENDER_USER_RESOURCES` before it starts, so the harness starts
+it here, before any test module imports bpy.
+"""
+
+import re
+import shutil
+
+import pytest
+
+import harness
+
+bpy = harness.start()
+
+FAILURES = harness.ROOT / "out" / "test-failures"
+
+
+@pytest.fixture(scope="session")
+def addon_zip(tmp_path_factory):
+    """The extension zip built by Blender's own `blender_ext.py build`."""
+    return harness.build_zip(tmp_path_factory.mktemp("dist"))
+
+
+@pytest.fixture(scope="session")
+def addon(addon_zip):
+    """The installed and enabled add-on package (`bl_ext.user_default.water_surface`)."""
+    return harness.install(addon_zip)
+
+
+@pytest.fixture(scope="session")
+def eevee(addon):
+    """EEVEE's engine id in the running Blender."""
+    return harness.addon("engine").eevee_engine_id()
+
+
+@pytest.fixture
+def scene(addon, eevee):
+    """A clean, small EEVEE scene; the add-on stays enabled."""
+    return harness.clean_scene(engine=eevee)
+
+
+@pytest.hookimpl(hookwrapper=True)
+def pytest_runtest_makereport(item, call):
+    outcome = yield
+    report = outcome.get_result()
+    setattr(item, f"report_{report.when}", report)
+
+
+@pytest.fixture
+def render(request, tmp_path):
+    """Renders a scene to a float (H, W, 4) array, row 0 at the top.
+
+    `render(scene, name="x", exr=False)`. When the test fails, its renders and
+    the scene's `.blend` are kept under `out/test-failures/` and their paths printed.
+    """
+    made = []
+
+    def _render(scene, name="render", exr=False):
+        path = tmp_path / f"{name}.{'exr' if exr else 'png'}"
+        made.append((scene, path))
+        return harness.render(scene, path, exr=exr)
+
+    yield _render
+    report = getattr(request.node, "report_call", None)
+    if made and report is not None and report.failed:
+        keep = FAILURES / re.sub(r"[^\w.-]+", "_", request.node.nodeid)
+        keep.mkdir(parents=True, exist_ok=True)
+        for _scene, path in made:
+            if path.exists():
+                shutil.copy(path, keep / path.name)
+        bpy.ops.wm.save_as_mainfile(filepath=str(keep / "scene.blend"), copy=True)
+        print(f"\nkept renders and .blend of the failed test in {keep}")
+
+
+@pytest.fixture
+def project():
+    """The helper that projects world points to pixels of the scene's camera."""
+    return harness.world_to_pixel

@@ -1,0 +1,217 @@
+"""Runs the add-on the way users get it, inside bpy from PyPI.
+
+Shared by the tests (`tests/conftest.py`) and the demo (`tools/render_demo.py`):
+build the zip with Blender's own `blender_ext.py`, install it into a throw-away
+user folder with `package_install_files`, and render scenes to numpy arrays.
+`BLENDER_USER_RESOURCES` must be set before bpy is imported, so `start()`
+is the only way in: nothing here imports bpy at module level.
+"""
+
+import glob
+import importlib.util
+import os
+import subprocess
+import sys
+import tempfile
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parent.parent
+ADDON_ID = "water_surface"
+ADDON_MODULE = f"bl_ext.user_default.{ADDON_ID}"
+
+
+def blender_ext_script():
+    """Path of Blender's `extension build/validate` command inside the bpy install."""
+    spec = importlib.util.find_spec("bpy")
+    if spec is None or not spec.submodule_search_locations:
+        raise RuntimeError("bpy is not installed in this Python")
+    bpy_dir = Path(list(spec.submodule_search_locations)[0])
+    found = glob.glob(str(bpy_dir / "*" / "scripts/addons_core/bl_pkg/cli/blender_ext.py"))
+    if not found:
+        raise RuntimeError(f"blender_ext.py not found under {bpy_dir}")
+    return Path(found[0])
+
+
+def run_blender_ext(*args):
+    """Runs `blender_ext.py` with this Python; returns the completed process."""
+    return subprocess.run(
+        [sys.executable, str(blender_ext_script()), *args],
+        capture_output=True,
+        text=True,
+        check=False,
+    )
+
+
+def build_zip(out_dir):
+    """Builds the extension zip from the repository root into `out_dir`."""
+    out_dir = Path(out_dir)
+    out_dir.mkdir(parents=True, exist_ok=True)
+    zip_path = out_dir / f"{ADDON_ID}.zip"
+    proc = run_blender_ext("build", "--source-dir", str(ROOT), "--output-filepath", str(zip_path))
+    if proc.returncode != 0 or not zip_path.exists():
+        raise RuntimeError(f"extension build failed:\n{proc.stdout}\n{proc.stderr}")
+    return zip_path
+
+
+def start(user_dir=None):
+    """Points Blender at a fresh user folder, imports bpy and returns it."""
+    if "bpy" in sys.modules:
+        raise RuntimeError("harness.start() must run before bpy is imported")
+    user_dir = user_dir or tempfile.mkdtemp(prefix="water_surface_user_")
+    os.environ["BLENDER_USER_RESOURCES"] = str(user_dir)
+    import bpy
+
+    return bpy
+
+
+def install(zip_path):
+    """Installs and enables the built zip in the user_default repository."""
+    import bpy
+
+    result = bpy.ops.extensions.package_install_files(
+        filepath=str(zip_path), repo="user_default", enable_on_install=True
+    )
+    if result != {"FINISHED"}:
+        raise RuntimeError(f"installing {zip_path} returned {result}")
+    return importlib.import_module(ADDON_MODULE)
+
+
+def addon(submodule=None):
+    """The installed add-on's package, or one of its modules (for its plain functions)."""
+    return importlib.import_module(f"{ADDON_MODULE}.{submodule}" if submodule else ADDON_MODULE)
+
+
+def clean_scene(engine=None, width=128, height=72, samples=4):
+    """An empty scene with the add-on still enabled, set to render small and exact."""
+    import bpy
+
+    bpy.ops.wm.read_homefile(use_empty=True)
+    scene = bpy.context.scene
+    scene.render.engine = engine or addon("engine").eevee_engine_id()
+    scene.render.resolution_x = width
+    scene.render.resolution_y = height
+    scene.render.resolution_percentage = 100
+    scene.render.film_transparent = False
+    scene.view_settings.view_transform = "Standard"
+    scene.view_settings.look = "None"
+    scene.view_settings.exposure = 0.0
+    scene.view_settings.gamma = 1.0
+    if hasattr(scene, "eevee"):
+        scene.eevee.taa_render_samples = samples
+    scene.cycles.samples = samples
+    return scene
+
+
+def render(scene, path, exr=False):
+    """Renders `scene` to `path` and returns its pixels as float32 (H, W, 4), top row first.
+
+    PNG gives display values (what a person sees); 32-bit EXR gives exact linear values.
+    """
+    import bpy
+    import numpy as np
+
+    settings = scene.render.image_settings
+    settings.file_format = "OPEN_EXR" if exr else "PNG"
+    settings.color_mode = "RGBA"
+    settings.color_depth = "32" if exr else "8"
+    path = Path(path)
+    path.parent.mkdir(parents=True, exist_ok=True)
+    scene.render.filepath = str(path)
+    scene.render.use_file_extension = False
+    with bpy.context.temp_override(scene=scene):
+        bpy.ops.render.render(write_still=True, scene=scene.name)
+    image = bpy.data.images.load(str(path), check_existing=False)
+    try:
+        width, height = image.size
+        pixels = np.empty(width * height * 4, dtype=np.float32)
+        image.pixels.foreach_get(pixels)
+    finally:
+        bpy.data.images.remove(image)
+    return pixels.reshape(height, width, 4)[::-1].copy()
+
+
+def world_to_pixel(scene, camera, points):
+    """Projects world points to (column, row) pixel coordinates, row 0 at the top."""
+    import numpy as np
+    from bpy_extras.object_utils import world_to_camera_view
+    from mathutils import Vector
+
+    scale = scene.render.resolution_percentage / 100
+    width = scene.render.resolution_x * scale
+    height = scene.render.resolution_y * scale
+    out = []
+    for point in points:
+        ndc = world_to_camera_view(scene, camera, Vector(point))
+        out.append((ndc.x * width, (1.0 - ndc.y) * height))
+    return np.array(out)
+
+
+def add_camera(scene, location, target, lens=35.0):
+    """A camera at `location` looking at `target`, made the scene's camera."""
+    import bpy
+    from mathutils import Vector
+
+    camera = bpy.data.objects.new("Camera", bpy.data.cameras.new("Camera"))
+    camera.data.lens = lens
+    camera.data.clip_end = 1000.0
+    scene.collection.objects.link(camera)
+    camera.location = location
+    direction = Vector(target) - Vector(location)
+    camera.rotation_euler = direction.to_track_quat("-Z", "Y").to_euler()
+    scene.camera = camera
+    return camera
+
+
+def emission_material(name, color, strength=1.0):
+    """An unlit material: renders exactly `color * strength`."""
+    import bpy
+
+    material = bpy.data.materials.new(name)
+    if bpy.app.version < (5, 0, 0):
+        material.use_nodes = True
+    nodes = material.node_tree.nodes
+    nodes.clear()
+    emission = nodes.new("ShaderNodeEmission")
+    emission.inputs["Color"].default_value = (*color[:3], 1.0)
+    emission.inputs["Strength"].default_value = strength
+    output = nodes.new("ShaderNodeOutputMaterial")
+    material.node_tree.links.new(emission.outputs[0], output.inputs["Surface"])
+    return material
+
+
+def add_cube(scene, location, size=1.0, material=None, name="Cube"):
+    """A cube mesh object of edge `size` at `location`, linked to `scene`."""
+    import bmesh
+    import bpy
+
+    mesh = bpy.data.meshes.new(name)
+    bm = bmesh.new()
+    bmesh.ops.create_cube(bm, size=size)
+    bm.to_mesh(mesh)
+    bm.free()
+    if material is not None:
+        mesh.materials.append(material)
+    obj = bpy.data.objects.new(name, mesh)
+    obj.location = location
+    scene.collection.objects.link(obj)
+    return obj
+
+
+def set_world_color(scene, color, strength=1.0):
+    """A world of one flat colour (the sky), made if missing."""
+    import bpy
+
+    if scene.world is None:
+        scene.world = bpy.data.worlds.new("World")
+    world = scene.world
+    if bpy.app.version < (5, 0, 0):
+        world.use_nodes = True
+    background = world.node_tree.nodes.get("Background")
+    if background is None:
+        world.node_tree.nodes.clear()
+        background = world.node_tree.nodes.new("ShaderNodeBackground")
+        output = world.node_tree.nodes.new("ShaderNodeOutputWorld")
+        world.node_tree.links.new(background.outputs[0], output.inputs["Surface"])
+    background.inputs["Color"].default_value = (*color[:3], 1.0)
+    background.inputs["Strength"].default_value = strength
+    return world
