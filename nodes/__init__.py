@@ -1,4 +1,11 @@
-"""Node groups and materials, each described as data and built by one builder."""
+"""Node groups and the water material, each group described as data and built by one builder."""
+
+from . import bump_uv, water_surface, wind_frame
+from .builder import NodeGroupError, ensure_group
+
+SPECS = {spec.name: spec for spec in (wind_frame.SPEC, bump_uv.SPEC, water_surface.SPEC)}
+
+__all__ = ("SPECS", "NodeGroupError", "ensure_group")
 
 
 def register():

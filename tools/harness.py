@@ -92,6 +92,7 @@ def clean_scene(engine=None, width=128, height=72, samples=4):
     scene.render.resolution_y = height
     scene.render.resolution_percentage = 100
     scene.render.film_transparent = False
+    scene.render.dither_intensity = 0.0
     scene.view_settings.view_transform = "Standard"
     scene.view_settings.look = "None"
     scene.view_settings.exposure = 0.0
@@ -215,3 +216,38 @@ def set_world_color(scene, color, strength=1.0):
     background.inputs["Color"].default_value = (*color[:3], 1.0)
     background.inputs["Strength"].default_value = strength
     return world
+
+
+def pixel_rays(scene, camera):
+    """World-space ray origin and unit directions through every pixel centre, (H, W, 3), row 0 at the top."""
+    import numpy as np
+
+    scale = scene.render.resolution_percentage / 100
+    width = int(scene.render.resolution_x * scale)
+    height = int(scene.render.resolution_y * scale)
+    frame = [
+        np.array(c) for c in camera.data.view_frame(scene=scene)
+    ]  # top-right, bottom-right, bottom-left, top-left
+    top_right, _bottom_right, bottom_left, top_left = frame
+    u = (np.arange(width) + 0.5) / width
+    v = (np.arange(height) + 0.5) / height
+    local = (
+        top_left[None, None, :]
+        + u[None, :, None] * (top_right - top_left)[None, None, :]
+        + v[:, None, None] * (bottom_left - top_left)[None, None, :]
+    )
+    matrix = np.array(camera.matrix_world)
+    directions = local @ matrix[:3, :3].T
+    directions /= np.linalg.norm(directions, axis=-1, keepdims=True)
+    origin = matrix[:3, 3]
+    return origin, directions
+
+
+def hit_plane_z(origin, directions, z=0.0):
+    """Where rays meet the plane at height `z`: points (H, W, 3) and a mask of rays that reach it."""
+    import numpy as np
+
+    with np.errstate(divide="ignore", invalid="ignore"):
+        t = (z - origin[2]) / directions[..., 2]
+    hits = origin + t[..., None] * directions
+    return hits, np.isfinite(t) & (t > 0)

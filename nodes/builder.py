@@ -1,0 +1,152 @@
+"""Turns a `GroupSpec` into a node tree: get or create by name, versioned, laid out in columns.
+
+* A group whose stamped version equals the spec's is reused as it is.
+* An older one is upgraded in place: its interface is brought in line socket by
+  socket (so materials keep their links and values) and its nodes rebuilt.
+* A newer one (saved by a newer add-on) is left alone, so the file keeps working.
+* A group half-built when building fails is removed, and the error names it.
+"""
+
+import bpy
+
+from .spec import BUMP_IMAGE
+
+VERSION_KEY = "water_surface_version"
+COLUMN_WIDTH = 240
+ROW_GAP = 40
+SOCKET_HEIGHT = 22
+HEADER_HEIGHT = 60
+
+
+class NodeGroupError(RuntimeError):
+    """A node group could not be built or reused."""
+
+
+def ensure_group(spec, specs, name=None, image=None):
+    """The node tree for `spec`, built or upgraded if needed.
+
+    `specs` maps the names of nested groups to their specs; `image` fills the
+    spec's `BUMP_IMAGE` slots, and `name` (default: the spec's) names the tree.
+    """
+    name = name or spec.name
+    for nested in spec.nested_groups():
+        ensure_group(specs[nested], specs)
+    tree = bpy.data.node_groups.get(name)
+    if tree is not None and tree.bl_idname != spec.tree_type:
+        raise NodeGroupError(
+            f"a node group named '{name}' exists but is a {tree.bl_idname}, not a {spec.tree_type}: rename it"
+        )
+    if tree is not None and tree.get(VERSION_KEY, 0) >= spec.version:
+        return tree
+    created = tree is None
+    if created:
+        tree = bpy.data.node_groups.new(name, spec.tree_type)
+    try:
+        _sync_interface(tree, spec)
+        _rebuild_nodes(tree, spec, image)
+    except Exception as error:
+        if created:
+            bpy.data.node_groups.remove(tree)
+        raise NodeGroupError(f"building node group '{name}' failed: {error}") from error
+    tree[VERSION_KEY] = spec.version
+    tree.description = spec.description
+    return tree
+
+
+def _interface_sockets(tree):
+    return [item for item in tree.interface.items_tree if item.item_type == "SOCKET"]
+
+
+def _sync_interface(tree, spec):
+    """Makes the interface match the spec, keeping sockets that already match by name and type."""
+    wanted = [("OUTPUT", s) for s in spec.outputs] + [("INPUT", s) for s in spec.inputs]
+    keep = set()
+    for position, (in_out, socket) in enumerate(wanted):
+        item = next(
+            (
+                i
+                for i in _interface_sockets(tree)
+                if i.in_out == in_out and i.name == socket.name and i.socket_type == socket.kind
+            ),
+            None,
+        )
+        if item is None:
+            item = tree.interface.new_socket(socket.name, in_out=in_out, socket_type=socket.kind)
+        tree.interface.move(item, position)
+        _set_socket(item, socket)
+        keep.add((in_out, socket.name))
+    for item in _interface_sockets(tree):
+        if (item.in_out, item.name) not in keep:
+            tree.interface.remove(item)
+
+
+def _set_socket(item, socket):
+    item.description = socket.tooltip
+    if socket.subtype is not None:
+        item.subtype = socket.subtype
+    if socket.default is not None:
+        item.default_value = socket.default
+    if socket.min is not None:
+        item.min_value = socket.min
+    if socket.max is not None:
+        item.max_value = socket.max
+    item.hide_value = socket.hide_value
+
+
+def _rebuild_nodes(tree, spec, image):
+    tree.nodes.clear()
+    nodes = {
+        "input": tree.nodes.new("NodeGroupInput"),
+        "output": tree.nodes.new("NodeGroupOutput"),
+    }
+    nodes["input"].location = (0, 0)
+    for key, description in spec.nodes.items():
+        nodes[key] = _new_node(tree, key, description, image)
+    for source, target in spec.links:
+        tree.links.new(_socket(nodes, source, "outputs"), _socket(nodes, target, "inputs"))
+    _layout(tree, nodes, spec)
+
+
+def _new_node(tree, key, description, image):
+    node = tree.nodes.new(description.type)
+    node.name = key
+    node.label = description.label
+    if description.group:
+        node.node_tree = bpy.data.node_groups[description.group]
+    for prop, value in description.props.items():
+        setattr(node, prop, image if value == BUMP_IMAGE else value)
+    for socket_key, value in description.values.items():
+        socket = node.inputs[socket_key]
+        if hasattr(socket.default_value, "__len__") and len(socket.default_value) == 4 and len(value) == 3:
+            value = (*value, 1.0)
+        socket.default_value = value
+    return node
+
+
+def _socket(nodes, address, side):
+    """Resolves "node:Name" or "node:#index" among the enabled sockets on one side of a node."""
+    key, _, name = address.partition(":")
+    if key not in nodes:
+        raise NodeGroupError(f"link names unknown node '{key}'")
+    sockets = [s for s in getattr(nodes[key], side) if s.enabled]
+    if name.startswith("#"):
+        return sockets[int(name[1:])]
+    for socket in sockets:
+        if socket.name == name or socket.identifier == name:
+            return socket
+    raise NodeGroupError(f"node '{key}' has no {side[:-1]} '{name}'")
+
+
+def _layout(tree, nodes, spec):
+    """Places nodes in their spec columns, top to bottom in spec order, so the flow reads left to right."""
+    columns = {}
+    for key, description in spec.nodes.items():
+        columns.setdefault(description.column, []).append(nodes[key])
+    last = max(columns, default=0) + 1
+    for column, members in columns.items():
+        y = 0
+        for node in members:
+            node.location = (column * COLUMN_WIDTH, y)
+            visible = sum(s.enabled for s in node.inputs) + sum(s.enabled for s in node.outputs)
+            y -= HEADER_HEIGHT + SOCKET_HEIGHT * visible + ROW_GAP
+    nodes["output"].location = (last * COLUMN_WIDTH, 0)

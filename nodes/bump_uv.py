@@ -1,0 +1,81 @@
+"""`Water Surface Bump UV`: where the bump map is sampled (SPEC 1, step 1).
+
+`uv' = (dot(uv, p), dot(uv, w))`, then `uv'.y += Time * Wind Force`, then
+`uv' /= Wave Length`. It lives beside the image node in the material, since a
+shader group cannot take an image as input: that is what lets every material
+pick its own normal map.
+"""
+
+from . import wind_frame
+from .spec import GroupSpec, Node, Socket, group_node, math, vmath
+
+NAME = "Water Surface Bump UV"
+
+SPEC = GroupSpec(
+    name=NAME,
+    version=1,
+    description="Scrolling, wind-aligned, tiled UV for the water bump map",
+    inputs=(
+        Socket(
+            "Wave Length",
+            "NodeSocketFloat",
+            0.1,
+            min=0.001,
+            max=100.0,
+            subtype="DISTANCE",
+            tooltip="Bump tile size in UV units: the bump repeats 1 / Wave Length times across the plane",
+        ),
+        Socket(
+            "Wind Direction",
+            "NodeSocketVector",
+            (0.0, 1.0, 0.0),
+            subtype="XYZ",
+            tooltip="Direction the bump scrolls in (X and Y); zero means +Y",
+        ),
+        Socket(
+            "Wind Force",
+            "NodeSocketFloat",
+            0.02,
+            min=0.0,
+            max=10.0,
+            tooltip="Scroll speed in UV units per second, before tiling",
+        ),
+        Socket(
+            "Time",
+            "NodeSocketFloat",
+            0.0,
+            subtype="TIME_ABSOLUTE",
+            tooltip="Seconds; the material drives it from the scene clock",
+        ),
+    ),
+    outputs=(Socket("Vector", "NodeSocketVector", tooltip="UV at which to sample the bump map"),),
+    nodes={
+        "coords": Node("ShaderNodeTexCoord", 1),
+        "frame": group_node(wind_frame.NAME, 1),
+        "u": vmath("DOT_PRODUCT", 2, "u' = uv . p"),
+        "v": vmath("DOT_PRODUCT", 2, "v' = uv . w"),
+        "scroll": math("MULTIPLY", 2, "Time * Wind Force"),
+        "v_scrolled": math("ADD", 3, "v' + scroll"),
+        "uv_wind": Node("ShaderNodeCombineXYZ", 4, label="wind-frame UV"),
+        "tiled": vmath("DIVIDE", 5, "/ Wave Length"),
+        "length_xyz": Node("ShaderNodeCombineXYZ", 4, label="(L, L, 1)", values={"Z": 1.0}),
+    },
+    links=(
+        ("input:Wind Direction", "frame:Wind Direction"),
+        ("coords:UV", "u:#0"),
+        ("frame:Across", "u:#1"),
+        ("coords:UV", "v:#0"),
+        ("frame:Wind", "v:#1"),
+        ("input:Time", "scroll:#0"),
+        ("input:Wind Force", "scroll:#1"),
+        ("v:Value", "v_scrolled:#0"),
+        ("scroll:Value", "v_scrolled:#1"),
+        ("u:Value", "uv_wind:X"),
+        ("v_scrolled:Value", "uv_wind:Y"),
+        ("input:Wave Length", "length_xyz:X"),
+        ("input:Wave Length", "length_xyz:Y"),
+        ("uv_wind:Vector", "tiled:#0"),
+        ("length_xyz:Vector", "tiled:#1"),
+        ("tiled:Vector", "output:Vector"),
+    ),
+)

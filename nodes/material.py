@@ -1,0 +1,149 @@
+"""The water material: the `Water Surface` group, its bump image, the clock and the sun.
+
+What animates goes through simple-expression drivers (no Python runs), so a
+saved file renders with auto-run scripts off and without the add-on.
+"""
+
+import bpy
+
+from . import SPECS, water_surface
+from .builder import ensure_group
+from .bump_image import ensure_bump_image
+
+WATER_NODE = "Water Surface"
+TIME_EXPRESSION = "frame / (fps / fps_base)"
+
+
+def water_group(image=None):
+    """The `Water Surface` group sampling `image`.
+
+    A shader group cannot take an image as an input, so a material with its own
+    normal map uses a group of its own, "Water Surface (<image>)", built from
+    the same description and reused for every material with that image.
+    """
+    if image is None or image == bpy.data.images.get(ensure_bump_image().name):
+        return ensure_group(SPECS[water_surface.NAME], SPECS, image=ensure_bump_image())
+    if image.colorspace_settings.name != "Non-Color":
+        image.colorspace_settings.name = "Non-Color"
+    return ensure_group(
+        SPECS[water_surface.NAME], SPECS, name=f"{water_surface.NAME} ({image.name})", image=image
+    )
+
+
+def make_water_material(name="Water", scene=None, image=None, sun=None):
+    """A new water material. `image` is a tangent-space normal map (default: the packed
+    water bump); `sun` a sun light object for the glint (default: the scene's first sun)."""
+    scene = scene or bpy.context.scene
+    group = water_group(image)
+    material = bpy.data.materials.new(name)
+    if bpy.app.version < (5, 0, 0):
+        material.use_nodes = True
+    tree = material.node_tree
+    tree.nodes.clear()
+    water = tree.nodes.new("ShaderNodeGroup")
+    water.node_tree, water.name, water.location, water.width = group, WATER_NODE, (-150, 0), 220
+    zero = tree.nodes.new("ShaderNodeValue")
+    zero.name, zero.label, zero.location = "Thickness", "Thickness 0 (one interface)", (-150, -420)
+    zero.outputs[0].default_value = 0.0
+    output = tree.nodes.new("ShaderNodeOutputMaterial")
+    output.location = (150, 0)
+    tree.links.new(water.outputs["Shader"], output.inputs["Surface"])
+    # Thickness 0: EEVEE models one interface and mixes the closures linearly;
+    # left unconnected, the object gets a thickness and the refraction's weight is squared.
+    tree.links.new(zero.outputs[0], output.inputs["Thickness"])
+
+    # What EEVEE needs to trace refraction through this surface.
+    material.surface_render_method = "DITHERED"
+    material.use_raytrace_refraction = True
+    material.thickness_mode = "SLAB"
+    material.use_backface_culling = False
+
+    drive_time(material, scene)
+    drive_sun(material, sun if sun is not None else first_sun(scene))
+    return material
+
+
+def water_node(material):
+    """The material's `Water Surface` group node, or None."""
+    if material is None or material.node_tree is None:
+        return None
+    node = material.node_tree.nodes.get(WATER_NODE)
+    return node if node is not None and node.type == "GROUP" else None
+
+
+def bump_image(material):
+    """The normal map the material's water group samples."""
+    node = water_node(material)
+    bump = node.node_tree.nodes.get("bump") if node is not None else None
+    return bump.image if bump is not None else None
+
+
+def set_bump_image(material, image):
+    """Makes the material sample `image` (None: the default bump); its values stay as they were."""
+    water_node(material).node_tree = water_group(image)
+
+
+def _drive(socket, index, expression, variables):
+    """A simple-expression driver on `socket.default_value[index]`.
+
+    `variables` are (name, id_type, id, path) of single-property variables.
+    """
+    args = ("default_value",) if index is None else ("default_value", index)
+    socket.driver_remove(*args)
+    driver = socket.driver_add(*args).driver
+    driver.type = "SCRIPTED"
+    for var_name, id_type, target_id, path in variables:
+        var = driver.variables.new()
+        var.name, var.type = var_name, "SINGLE_PROP"
+        var.targets[0].id_type = id_type
+        var.targets[0].id = target_id
+        var.targets[0].data_path = path
+    driver.expression = expression
+    return driver
+
+
+def drive_time(material, scene):
+    """`Time` = seconds on `scene`'s clock: frame / (fps / fps_base)."""
+    _drive(
+        water_node(material).inputs["Time"],
+        None,
+        TIME_EXPRESSION,
+        [("fps", "SCENE", scene, "render.fps"), ("fps_base", "SCENE", scene, "render.fps_base")],
+    )
+
+
+def first_sun(scene):
+    """The first sun light in `scene`, or None."""
+    return next((o for o in scene.objects if o.type == "LIGHT" and o.data.type == "SUN"), None)
+
+
+def glint_sun(material):
+    """The sun object the glint follows, or None."""
+    animation = material.node_tree.animation_data
+    for fcurve in animation.drivers if animation else ():
+        if fcurve.data_path.endswith(
+            f'nodes["{WATER_NODE}"].inputs[{_input_index(material, "Sun Direction")}].default_value'
+        ):
+            return fcurve.driver.variables[0].targets[0].id
+    return None
+
+
+def _input_index(material, name):
+    node = water_node(material)
+    return list(node.inputs).index(node.inputs[name])
+
+
+def drive_sun(material, sun):
+    """`Sun Direction` follows `sun`'s -Z axis (the way its light travels).
+
+    With `sun` None it is the reference's default light.
+    """
+    socket = water_node(material).inputs["Sun Direction"]
+    for i in range(3):
+        socket.driver_remove("default_value", i)
+    if sun is None:
+        socket.default_value = water_surface.DEFAULT_SUN
+        return
+    for i in range(3):
+        # RNA stores matrices by column: matrix_world[2] is the local Z axis in world space.
+        _drive(socket, i, "-z", [("z", "OBJECT", sun, f"matrix_world[2][{i}]")])

@@ -1,0 +1,76 @@
+"""Node groups written as data: sockets, nodes and links, with no bpy in sight.
+
+A `GroupSpec` is the single source of truth for one node group; `builder.py`
+turns any of them into a node tree. Keeping the description plain data lets
+tests read it without Blender and keeps the builder generic.
+
+Links name sockets as "node:Socket Name" or, where names repeat (a Math node's
+two "Value" inputs), by position: "node:#1". The group's own input and output
+nodes are "input" and "output".
+"""
+
+from dataclasses import dataclass, field
+
+# Stands for the image a group is built with (`ensure_group(..., image=...)`), in node props.
+BUMP_IMAGE = "<bump image>"
+
+
+@dataclass(frozen=True)
+class Socket:
+    """One interface socket of a group."""
+
+    name: str
+    kind: str  # NodeSocketFloat, NodeSocketInt, NodeSocketVector, NodeSocketColor, NodeSocketShader
+    default: object = None
+    min: float | None = None
+    max: float | None = None
+    subtype: str | None = None
+    tooltip: str = ""
+    hide_value: bool = False
+
+
+@dataclass(frozen=True)
+class Node:
+    """One node: its type, the column it sits in, its properties and unlinked input values."""
+
+    type: str
+    column: int
+    props: dict = field(default_factory=dict)
+    values: dict = field(default_factory=dict)
+    label: str = ""
+    group: str | None = None  # for ShaderNodeGroup: the name of the nested group
+
+
+@dataclass(frozen=True)
+class GroupSpec:
+    name: str
+    version: int
+    description: str
+    inputs: tuple
+    outputs: tuple
+    nodes: dict
+    links: tuple
+    tree_type: str = "ShaderNodeTree"
+
+    def nested_groups(self):
+        """Names of the groups this one uses, which must be built first."""
+        return [node.group for node in self.nodes.values() if node.group]
+
+
+def math(operation, column, label="", clamp=False, **values):
+    """A scalar Math node; `values` map input positions ("a", "b", "c") to constants."""
+    index = {"a": 0, "b": 1, "c": 2}
+    props = {"operation": operation, "use_clamp": clamp}
+    return Node("ShaderNodeMath", column, props, {index[k]: v for k, v in values.items()}, label)
+
+
+def vmath(operation, column, label="", **values):
+    """A Vector Math node; `values` map "a", "b", "c" or "scale" to constants."""
+    index = {"a": 0, "b": 1, "c": 2, "scale": "Scale"}
+    props = {"operation": operation}
+    return Node("ShaderNodeVectorMath", column, props, {index[k]: v for k, v in values.items()}, label)
+
+
+def group_node(name, column, label=""):
+    """A node that uses another group described here."""
+    return Node("ShaderNodeGroup", column, label=label or name, group=name)
