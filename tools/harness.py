@@ -160,6 +160,7 @@ def add_camera(scene, location, target, lens=35.0):
     direction = Vector(target) - Vector(location)
     camera.rotation_euler = direction.to_track_quat("-Z", "Y").to_euler()
     scene.camera = camera
+    bpy.context.view_layer.update()  # so matrix_world is current for projections
     return camera
 
 
