@@ -1,9 +1,8 @@
 """`Water Surface Bump UV`: where the bump map is sampled (SPEC 1, step 1).
 
 `uv' = (dot(uv, p), dot(uv, w))`, then `uv'.y += Time * Wind Force`, then
-`uv' /= Wave Length`. It lives beside the image node in the material, since a
-shader group cannot take an image as input: that is what lets every material
-pick its own normal map.
+`uv' /= Wave Length`. Nested in the `Water Surface` group, which samples its
+bump map there.
 """
 
 from . import wind_frame
@@ -11,43 +10,46 @@ from .spec import GroupSpec, Node, Socket, group_node, math, vmath
 
 NAME = "Water Surface Bump UV"
 
+# Shared with the `Water Surface` group, whose inputs they also are.
+SCROLL_INPUTS = (
+    Socket(
+        "Wave Length",
+        "NodeSocketFloat",
+        0.1,
+        min=0.001,
+        max=100.0,
+        subtype="DISTANCE",
+        tooltip="Bump tile size in UV units: the bump repeats 1 / Wave Length times across the plane",
+    ),
+    Socket(
+        "Wind Direction",
+        "NodeSocketVector",
+        (0.0, 1.0, 0.0),
+        subtype="XYZ",
+        tooltip="Direction the bump scrolls in (X and Y); zero means +Y",
+    ),
+    Socket(
+        "Wind Force",
+        "NodeSocketFloat",
+        0.02,
+        min=0.0,
+        max=10.0,
+        tooltip="Scroll speed in UV units per second, before tiling",
+    ),
+    Socket(
+        "Time",
+        "NodeSocketFloat",
+        0.0,
+        subtype="TIME_ABSOLUTE",
+        tooltip="Seconds; the material drives it from the scene clock",
+    ),
+)
+
 SPEC = GroupSpec(
     name=NAME,
     version=1,
     description="Scrolling, wind-aligned, tiled UV for the water bump map",
-    inputs=(
-        Socket(
-            "Wave Length",
-            "NodeSocketFloat",
-            0.1,
-            min=0.001,
-            max=100.0,
-            subtype="DISTANCE",
-            tooltip="Bump tile size in UV units: the bump repeats 1 / Wave Length times across the plane",
-        ),
-        Socket(
-            "Wind Direction",
-            "NodeSocketVector",
-            (0.0, 1.0, 0.0),
-            subtype="XYZ",
-            tooltip="Direction the bump scrolls in (X and Y); zero means +Y",
-        ),
-        Socket(
-            "Wind Force",
-            "NodeSocketFloat",
-            0.02,
-            min=0.0,
-            max=10.0,
-            tooltip="Scroll speed in UV units per second, before tiling",
-        ),
-        Socket(
-            "Time",
-            "NodeSocketFloat",
-            0.0,
-            subtype="TIME_ABSOLUTE",
-            tooltip="Seconds; the material drives it from the scene clock",
-        ),
-    ),
+    inputs=SCROLL_INPUTS,
     outputs=(Socket("Vector", "NodeSocketVector", tooltip="UV at which to sample the bump map"),),
     nodes={
         "coords": Node("ShaderNodeTexCoord", 1),
