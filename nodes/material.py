@@ -21,8 +21,9 @@ def water_group(image=None):
     normal map uses a group of its own, "Water Surface (<image>)", built from
     the same description and reused for every material with that image.
     """
-    if image is None or image == bpy.data.images.get(ensure_bump_image().name):
-        return ensure_group(SPECS[water_surface.NAME], SPECS, image=ensure_bump_image())
+    default = ensure_bump_image()
+    if image is None or image == default:
+        return ensure_group(SPECS[water_surface.NAME], SPECS, image=default)
     if image.colorspace_settings.name != "Non-Color":
         image.colorspace_settings.name = "Non-Color"
     return ensure_group(
@@ -119,18 +120,12 @@ def first_sun(scene):
 
 def glint_sun(material):
     """The sun object the glint follows, or None."""
+    path = water_node(material).inputs["Sun Direction"].path_from_id("default_value")
     animation = material.node_tree.animation_data
     for fcurve in animation.drivers if animation else ():
-        if fcurve.data_path.endswith(
-            f'nodes["{WATER_NODE}"].inputs[{_input_index(material, "Sun Direction")}].default_value'
-        ):
+        if fcurve.data_path == path:
             return fcurve.driver.variables[0].targets[0].id
     return None
-
-
-def _input_index(material, name):
-    node = water_node(material)
-    return list(node.inputs).index(node.inputs[name])
 
 
 def drive_sun(material, sun):

@@ -58,7 +58,7 @@ def render(request, tmp_path):
 
     def _render(scene, name="render", exr=False):
         path = tmp_path / f"{name}.{'exr' if exr else 'png'}"
-        made.append((scene, path))
+        made.append(path)
         return harness.render(scene, path, exr=exr)
 
     yield _render
@@ -66,7 +66,7 @@ def render(request, tmp_path):
     if made and report is not None and report.failed:
         keep = FAILURES / re.sub(r"[^\w.-]+", "_", request.node.nodeid)
         keep.mkdir(parents=True, exist_ok=True)
-        for _scene, path in made:
+        for path in made:
             if path.exists():
                 shutil.copy(path, keep / path.name)
         bpy.ops.wm.save_as_mainfile(filepath=str(keep / "scene.blend"), copy=True)

@@ -66,9 +66,9 @@ def water(lake):
 
 
 def _driven(material, socket):
-    index = list(socket.node.inputs).index(socket)
     animation = material.node_tree.animation_data
-    return any(f"inputs[{index}]" in fc.data_path for fc in (animation.drivers if animation else ()))
+    path = socket.path_from_id("default_value")
+    return any(fc.data_path == path for fc in (animation.drivers if animation else ()))
 
 
 def _aim_sun(sun, direction):

@@ -97,8 +97,7 @@ def clean_scene(engine=None, width=128, height=72, samples=4):
     scene.view_settings.look = "None"
     scene.view_settings.exposure = 0.0
     scene.view_settings.gamma = 1.0
-    if hasattr(scene, "eevee"):
-        scene.eevee.taa_render_samples = samples
+    scene.eevee.taa_render_samples = samples
     scene.cycles.samples = samples
     return scene
 
@@ -229,7 +228,7 @@ def pixel_rays(scene, camera):
     frame = [
         np.array(c) for c in camera.data.view_frame(scene=scene)
     ]  # top-right, bottom-right, bottom-left, top-left
-    top_right, _bottom_right, bottom_left, top_left = frame
+    top_right, _, bottom_left, top_left = frame
     u = (np.arange(width) + 0.5) / width
     v = (np.arange(height) + 0.5) / height
     local = (

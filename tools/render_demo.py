@@ -42,13 +42,8 @@ def build_scene(bpy):
         scene, (-7, 14, 1.0), size=1.0, material=_glossy(bpy, "Rock", (0.35, 0.3, 0.25), 0.8)
     )
     rock.scale = (4, 4, 4)
-    harness.add_cube(
-        scene, (0, 0, -3.0), size=1.0, material=_glossy(bpy, "Floor", (0.5, 0.45, 0.3), 0.9)
-    ).scale = (
-        128,
-        128,
-        1,
-    )
+    floor_material = _glossy(bpy, "Floor", (0.5, 0.45, 0.3), 0.9)
+    harness.add_cube(scene, (0, 0, -3.0), size=1.0, material=floor_material).scale = (128, 128, 1)
     harness.add_camera(scene, (0, -14, 5), (0, 10, 0), lens=30)
     return scene
 
