@@ -1,8 +1,25 @@
-"""Operators, one a module; registered in order, unregistered in reverse."""
+"""Operators, one job a module; registered in order, unregistered in reverse."""
 
 import bpy
 
-classes = ()
+from .add_water import OBJECT_OT_water_surface_add
+from .link_ops import OBJECT_OT_water_surface_bump_set, OBJECT_OT_water_surface_sun_set
+from .mirror_setup import OBJECT_OT_water_mirror_setup
+from .preset_ops import (
+    OBJECT_OT_water_surface_preset_add,
+    OBJECT_OT_water_surface_preset_apply,
+    OBJECT_OT_water_surface_preset_remove,
+)
+
+classes = (
+    OBJECT_OT_water_surface_add,
+    OBJECT_OT_water_mirror_setup,
+    OBJECT_OT_water_surface_preset_apply,
+    OBJECT_OT_water_surface_preset_add,
+    OBJECT_OT_water_surface_preset_remove,
+    OBJECT_OT_water_surface_sun_set,
+    OBJECT_OT_water_surface_bump_set,
+)
 
 _register_classes, _unregister_classes = bpy.utils.register_classes_factory(classes)
 

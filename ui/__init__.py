@@ -2,16 +2,18 @@
 
 import bpy
 
-from . import panel
+from . import menus, panel
 
-classes = (panel.VIEW3D_PT_water_surface,)
+classes = (panel.WATER_MT_presets, panel.VIEW3D_PT_water_surface)
 
 _register_classes, _unregister_classes = bpy.utils.register_classes_factory(classes)
 
 
 def register():
     _register_classes()
+    menus.register()
 
 
 def unregister():
+    menus.unregister()
     _unregister_classes()

@@ -1,10 +1,42 @@
-"""Sidebar panel (3D view, tab "Water")."""
+"""Sidebar panel (3D view, tab "Water") for the active water object.
+
+It draws the sockets of the material's `Water Surface` group node directly:
+the node is the one source of truth, so what the `.blend` holds is what shows.
+"""
 
 import bpy
 
+from ..nodes.material import bump_image, glint_sun, water_node
+from ..nodes.water_surface import DEBUG_VIEWS
+from ..water.mirror import find_probe
+from ..water.values import water_material
+
+_SECTIONS = (
+    ("Waves", "MOD_WAVE", ("Wave Height", "Wave Length", "Bump Strength")),
+    ("Wind", "FORCE_WIND", ("Wind Direction", "Wind Force")),
+    ("Tint", "COLOR", ("Dull Color", "Dull Blend")),
+    ("Glint", "LIGHT_SUN", ("Specular Power", "Specular Strength")),
+)
+
+
+class WATER_MT_presets(bpy.types.Menu):
+    """Water presets: built-in and the user's."""
+
+    bl_label = "Water Presets"
+    bl_idname = "WATER_MT_presets"
+
+    def draw(self, _context):
+        from .. import presets
+
+        for preset in presets.all_presets():
+            op = self.layout.operator(
+                "object.water_surface_preset_apply", text=preset.name, icon="USER" if preset.user else "NONE"
+            )
+            op.preset = preset.id
+
 
 class VIEW3D_PT_water_surface(bpy.types.Panel):
-    """Shape the active water object."""
+    """Shape the active water object"""
 
     bl_label = "Water Surface"
     bl_space_type = "VIEW_3D"
@@ -12,4 +44,56 @@ class VIEW3D_PT_water_surface(bpy.types.Panel):
     bl_category = "Water"
 
     def draw(self, context):
-        self.layout.label(text="Add water from Add > Mesh > Water Surface")
+        layout = self.layout
+        material = water_material(context.active_object)
+        if material is None:
+            layout.label(text="The active object is not water", icon="INFO")
+            layout.operator("object.water_surface_add", icon="ADD")
+            return
+        node = water_node(material)
+        layout.label(text=f"Material: {material.name}", icon="MATERIAL")
+
+        row = layout.row(align=True)
+        row.menu("WATER_MT_presets", text="Presets", icon="PRESET")
+        row.operator("object.water_surface_preset_add", text="", icon="ADD")
+        row.operator("object.water_surface_preset_remove", text="", icon="REMOVE")
+
+        layout.use_property_split = True
+        for title, icon, names in _SECTIONS:
+            box = layout.box()
+            box.label(text=title, icon=icon)
+            for name in names:
+                socket = node.inputs[name]
+                if name == "Wind Direction":
+                    col = box.column(align=True)
+                    col.prop(socket, "default_value", index=0, text="Wind X")
+                    col.prop(socket, "default_value", index=1, text="Y")
+                else:
+                    box.prop(socket, "default_value", text=name)
+            if title == "Glint":
+                sun = glint_sun(material)
+                box.operator(
+                    "object.water_surface_sun_set",
+                    text=f"Sun: {sun.name if sun else 'Default Light'}",
+                    icon="LIGHT_SUN",
+                )
+
+        image = bump_image(material)
+        layout.operator(
+            "object.water_surface_bump_set",
+            text=f"Bump: {image.name if image else 'none'}",
+            icon="IMAGE_DATA",
+        )
+        view = node.inputs["Debug View"]
+        names = {number: label for number, _id, label, _tip in DEBUG_VIEWS}
+        layout.prop(view, "default_value", text=f"Debug: {names.get(view.default_value, '?')}")
+
+        box = layout.box()
+        probe = find_probe(context.active_object)
+        eevee = context.scene.eevee
+        ready = probe is not None and eevee.use_raytracing
+        box.label(
+            text="Mirror ready" if ready else "Mirror not set up",
+            icon="CHECKMARK" if ready else "ERROR",
+        )
+        box.operator("object.water_mirror_setup", icon="MOD_MIRROR")

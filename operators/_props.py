@@ -1,0 +1,24 @@
+"""Operator properties made from the preset schema, so ranges and tooltips have one source."""
+
+import bpy
+
+from ..presets import schema
+
+
+def field_property(key):
+    """A Blender property for the preset field `key`, with its default, hard range and tooltip."""
+    field = schema.BY_KEY[key]
+    common = {"name": field.label, "description": field.tooltip}
+    if field.kind == "vec2":
+        return bpy.props.FloatVectorProperty(
+            size=2, default=field.default, min=field.min, max=field.max, subtype="XYZ", **common
+        )
+    if field.kind == "color":
+        return bpy.props.FloatVectorProperty(
+            size=3, default=field.default, min=field.min, max=field.max, subtype="COLOR", **common
+        )
+    extra = {"unit": "LENGTH", "subtype": "DISTANCE"} if key == "size" else {}
+    soft = {"soft_max": 1000.0} if key == "size" else {}
+    return bpy.props.FloatProperty(
+        default=field.default, min=field.min, max=field.max, **extra, **soft, **common
+    )

@@ -1,0 +1,109 @@
+"""`object.water_surface_add`: one click, a water plane that mirrors and moves."""
+
+import bpy
+from bpy_extras import object_utils
+
+from .. import presets
+from ..presets import schema
+from ..water import mirror
+from ..water.plane import dress_water, new_water_mesh
+from ._props import field_property
+
+KEYS = tuple(field.key for field in schema.FIELDS)
+
+
+def _apply_preset(self, _context):
+    """Shows the chosen preset's values in the redo panel.
+
+    In a fresh call from Python, values given alongside `preset` win whatever
+    their order; once the operator has run (redo panel), choosing a preset
+    replaces them all.
+    """
+    try:
+        values = presets.get(self.preset).values
+    except presets.PresetError:
+        return
+    properties = getattr(self, "properties", self)  # update callbacks get the properties themselves
+    for key in KEYS:
+        if self.ran or not properties.is_property_set(key):
+            setattr(self, key, values[key])
+
+
+class OBJECT_OT_water_surface_add(object_utils.AddObjectHelper, bpy.types.Operator):
+    """Add a water plane that reflects and refracts the scene, with its mirror set-up"""
+
+    bl_idname = "object.water_surface_add"
+    bl_label = "Water Surface"
+    bl_options = {"REGISTER", "UNDO"}
+
+    preset: bpy.props.EnumProperty(
+        name="Preset",
+        description="Starting values for the water (built-in and user presets)",
+        items=presets.enum_items,
+        default=0,
+        update=_apply_preset,
+    )
+    size: field_property("size")
+    wave_height: field_property("wave_height")
+    wave_length: field_property("wave_length")
+    wind_direction: field_property("wind_direction")
+    wind_force: field_property("wind_force")
+    dull_color: field_property("dull_color")
+    dull_blend: field_property("dull_blend")
+    specular_power: field_property("specular_power")
+    specular_strength: field_property("specular_strength")
+    bump_strength: field_property("bump_strength")
+    mirror_setup: bpy.props.BoolProperty(
+        name="Mirror Set-Up",
+        description="Turn on EEVEE ray tracing and add a planar probe so the water shows a true mirror",
+        default=True,
+    )
+    ran: bpy.props.BoolProperty(options={"HIDDEN", "SKIP_SAVE"})
+
+    def draw(self, _context):
+        layout = self.layout
+        layout.use_property_split = True
+        layout.prop(self, "preset")
+        for key in KEYS:
+            layout.prop(self, key)
+        layout.prop(self, "mirror_setup")
+        layout.separator()
+        layout.prop(self, "align")
+        layout.prop(self, "location")
+        layout.prop(self, "rotation")
+
+    def execute(self, context):
+        try:
+            preset = presets.get(self.preset)
+        except presets.PresetError as error:
+            self.report({"ERROR"}, str(error))
+            return {"CANCELLED"}
+        # Values not given take the preset's; then all are clamped and shown as used.
+        values = {
+            key: getattr(self, key) if self.properties.is_property_set(key) else preset.values[key]
+            for key in KEYS
+        }
+        values = schema.clamp_values(
+            {k: tuple(v) if not isinstance(v, float) else v for k, v in values.items()}
+        )
+        for key, value in values.items():
+            setattr(self, key, value)
+        self.ran = True
+
+        if context.mode != "OBJECT":
+            if not bpy.ops.object.mode_set.poll():
+                self.report(
+                    {"ERROR"}, f"Cannot leave {context.mode.replace('_', ' ').title()} mode to add water"
+                )
+                return {"CANCELLED"}
+            bpy.ops.object.mode_set(mode="OBJECT")
+            self.report({"INFO"}, "Switched to Object Mode to add the water")
+
+        obj = object_utils.object_data_add(context, new_water_mesh("Water", values["size"]), operator=self)
+        material = dress_water(obj, context.scene, values)
+        message = f"Added '{obj.name}' ({preset.name}, {values['size']:g} m) with material '{material.name}'"
+        if self.mirror_setup:
+            changes = mirror.setup_mirror(context.scene, obj)
+            message += "; mirror set-up: " + ", ".join(changes)
+        self.report({"INFO"}, message)
+        return {"FINISHED"}

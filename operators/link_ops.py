@@ -1,0 +1,79 @@
+"""Choose the sun the glint follows and the normal map the water samples."""
+
+import bpy
+
+from ..nodes.material import drive_sun, set_bump_image
+from ..water.values import water_material
+
+_items = {}  # kept alive for Blender's dynamic enums
+
+
+def _sun_items(_self, context):
+    suns = [o for o in context.scene.objects if o.type == "LIGHT" and o.data.type == "SUN"]
+    _items["sun"] = [("NONE", "Default Light", "The reference's fixed light direction", "LIGHT", 0)] + [
+        (o.name, o.name, f"Follow '{o.name}'", "LIGHT_SUN", i + 1) for i, o in enumerate(suns)
+    ]
+    return _items["sun"]
+
+
+def _image_items(_self, _context):
+    _items["image"] = [
+        ("DEFAULT", "Water Surface Bump", "The add-on's packed water normal map", "IMAGE", 0)
+    ] + [
+        (image.name, image.name, f"Use '{image.name}' as the normal map", "IMAGE_DATA", i + 1)
+        for i, image in enumerate(bpy.data.images)
+        if image.type == "IMAGE" and image.name != "Water Surface Bump"
+    ]
+    return _items["image"]
+
+
+class OBJECT_OT_water_surface_sun_set(bpy.types.Operator):
+    """Choose the sun whose direction the water's glint follows"""
+
+    bl_idname = "object.water_surface_sun_set"
+    bl_label = "Glint Sun"
+    bl_options = {"REGISTER", "UNDO"}
+    bl_property = "sun"
+
+    sun: bpy.props.EnumProperty(name="Sun", items=_sun_items)
+
+    def invoke(self, context, _event):
+        context.window_manager.invoke_search_popup(self)
+        return {"RUNNING_MODAL"}
+
+    def execute(self, context):
+        material = water_material(context.active_object)
+        if material is None:
+            self.report({"ERROR"}, "The active object is not water (no Water Surface material)")
+            return {"CANCELLED"}
+        sun = None if self.sun == "NONE" else context.scene.objects.get(self.sun)
+        drive_sun(material, sun)
+        self.report({"INFO"}, f"Glint follows {'the default light' if sun is None else repr(sun.name)}")
+        return {"FINISHED"}
+
+
+class OBJECT_OT_water_surface_bump_set(bpy.types.Operator):
+    """Choose the tangent-space normal map the water scrolls"""
+
+    bl_idname = "object.water_surface_bump_set"
+    bl_label = "Bump Image"
+    bl_options = {"REGISTER", "UNDO"}
+    bl_property = "image"
+
+    image: bpy.props.EnumProperty(name="Image", items=_image_items)
+
+    def invoke(self, context, _event):
+        context.window_manager.invoke_search_popup(self)
+        return {"RUNNING_MODAL"}
+
+    def execute(self, context):
+        material = water_material(context.active_object)
+        if material is None:
+            self.report({"ERROR"}, "The active object is not water (no Water Surface material)")
+            return {"CANCELLED"}
+        image = None if self.image == "DEFAULT" else bpy.data.images.get(self.image)
+        set_bump_image(material, image)
+        self.report(
+            {"INFO"}, f"'{material.name}' samples {'the default bump' if image is None else repr(image.name)}"
+        )
+        return {"FINISHED"}

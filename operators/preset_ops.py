@@ -1,0 +1,78 @@
+"""Apply, save and remove water presets on the active water object."""
+
+import bpy
+
+from .. import presets
+from ..water.values import read_values, water_material, write_values
+
+
+def _active_water(operator, context):
+    material = water_material(context.active_object)
+    if material is None:
+        operator.report({"ERROR"}, "The active object is not water (no Water Surface material)")
+    return material
+
+
+class OBJECT_OT_water_surface_preset_apply(bpy.types.Operator):
+    """Set the active water's values from a preset"""
+
+    bl_idname = "object.water_surface_preset_apply"
+    bl_label = "Apply Water Preset"
+    bl_options = {"REGISTER", "UNDO"}
+
+    preset: bpy.props.EnumProperty(name="Preset", items=presets.enum_items)
+
+    def execute(self, context):
+        material = _active_water(self, context)
+        if material is None:
+            return {"CANCELLED"}
+        preset = presets.get(self.preset)
+        write_values(material, preset.values)
+        self.report({"INFO"}, f"Applied preset '{preset.name}' to '{material.name}'")
+        return {"FINISHED"}
+
+
+class OBJECT_OT_water_surface_preset_add(bpy.types.Operator):
+    """Save the active water's values as a user preset"""
+
+    bl_idname = "object.water_surface_preset_add"
+    bl_label = "Save Water Preset"
+
+    name: bpy.props.StringProperty(name="Name", description="Name of the new preset", default="My Water")
+
+    def invoke(self, context, _event):
+        return context.window_manager.invoke_props_dialog(self)
+
+    def execute(self, context):
+        material = _active_water(self, context)
+        if material is None:
+            return {"CANCELLED"}
+        try:
+            preset_id = presets.save_user_preset(self.name, read_values(material))
+        except (presets.PresetError, OSError) as error:
+            self.report({"ERROR"}, f"Cannot save preset '{self.name}': {error}")
+            return {"CANCELLED"}
+        self.report({"INFO"}, f"Saved preset '{self.name}' ({presets.get(preset_id).path})")
+        return {"FINISHED"}
+
+
+class OBJECT_OT_water_surface_preset_remove(bpy.types.Operator):
+    """Delete a user preset (built-in presets stay)"""
+
+    bl_idname = "object.water_surface_preset_remove"
+    bl_label = "Remove Water Preset"
+
+    preset: bpy.props.EnumProperty(name="Preset", items=presets.enum_items)
+
+    def invoke(self, context, _event):
+        return context.window_manager.invoke_props_dialog(self)
+
+    def execute(self, _context):
+        try:
+            name = presets.get(self.preset).name
+            presets.remove_user_preset(self.preset)
+        except (presets.PresetError, OSError) as error:
+            self.report({"ERROR"}, str(error))
+            return {"CANCELLED"}
+        self.report({"INFO"}, f"Removed preset '{name}'")
+        return {"FINISHED"}

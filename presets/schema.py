@@ -1,0 +1,131 @@
+"""What a water preset may hold, and how a read value is checked and clamped.
+
+Plain Python (no bpy): the fields come from the `Water Surface` group's own
+socket descriptions, so the preset ranges, the operator's properties and the
+shader's inputs cannot drift apart.
+"""
+
+import math
+from dataclasses import dataclass
+
+from ..nodes import water_surface
+
+
+class PresetError(ValueError):
+    """A preset that cannot be used: not JSON, not an object, or a value of the wrong type."""
+
+
+@dataclass(frozen=True)
+class Field:
+    """One preset value: its key in JSON, the group socket it sets (None: the plane's size)."""
+
+    key: str
+    socket: str | None
+    kind: str  # "float", "vec2" (X/Y of a vector socket) or "color" (RGB of a colour socket)
+    default: object
+    min: float
+    max: float
+    label: str
+    tooltip: str
+
+
+def _from_socket(key, socket_name, kind):
+    socket = next(s for s in water_surface.INPUTS if s.name == socket_name)
+    if kind == "vec2":
+        default, low, high = tuple(socket.default[:2]), -1.0, 1.0
+    elif kind == "color":
+        default, low, high = tuple(socket.default[:3]), 0.0, 1.0
+    else:
+        default, low, high = socket.default, socket.min, socket.max
+    return Field(key, socket_name, kind, default, low, high, socket_name, socket.tooltip)
+
+
+SIZE = Field(
+    "size", None, "float", 128.0, 0.01, 100000.0, "Size", "Edge length of the water plane (the seeds' 128)"
+)
+
+FIELDS = (
+    SIZE,
+    _from_socket("wave_height", "Wave Height", "float"),
+    _from_socket("wave_length", "Wave Length", "float"),
+    _from_socket("wind_direction", "Wind Direction", "vec2"),
+    _from_socket("wind_force", "Wind Force", "float"),
+    _from_socket("dull_color", "Dull Color", "color"),
+    _from_socket("dull_blend", "Dull Blend", "float"),
+    _from_socket("specular_power", "Specular Power", "float"),
+    _from_socket("specular_strength", "Specular Strength", "float"),
+    _from_socket("bump_strength", "Bump Strength", "float"),
+)
+BY_KEY = {field.key: field for field in FIELDS}
+# The shader's values: everything but the plane's size.
+SHADER_FIELDS = tuple(field for field in FIELDS if field.socket is not None)
+
+
+def defaults():
+    """The reference values (the seeds' lake)."""
+    return {field.key: field.default for field in FIELDS}
+
+
+def _number(value, key):
+    # bool is an int in Python, but `true` is no wave height.
+    if isinstance(value, bool) or not isinstance(value, (int, float)):
+        raise PresetError(f"'{key}' must be a number, not {type(value).__name__}")
+    return float(value)
+
+
+def _clamp(value, field):
+    if not math.isfinite(value):
+        raise PresetError(f"'{field.key}' must be finite, not {value}")
+    return min(max(value, field.min), field.max)
+
+
+def check_value(field, value):
+    """`value` as the field's type, clamped to its range; PresetError when ill-typed."""
+    if field.kind == "float":
+        return _clamp(_number(value, field.key), field)
+    width = 2 if field.kind == "vec2" else 3
+    if not isinstance(value, (list, tuple)) or len(value) != width:
+        raise PresetError(f"'{field.key}' must be a list of {width} numbers")
+    numbers = tuple(_clamp(_number(v, field.key), field) for v in value)
+    if field.kind == "vec2" and numbers[0] == 0.0 and numbers[1] == 0.0:
+        return tuple(field.default)  # no direction at all: the reference's +Y
+    return numbers
+
+
+def check_values(values):
+    """Every known value checked and clamped; unknown keys are returned apart.
+
+    Returns (clean values, unknown keys). Missing keys are simply absent: the
+    caller decides what they fall back to.
+    """
+    if not isinstance(values, dict):
+        raise PresetError("'values' must be an object of name: value")
+    clean, unknown = {}, []
+    for key, value in values.items():
+        field = BY_KEY.get(key)
+        if field is None:
+            unknown.append(key)
+        else:
+            clean[key] = check_value(field, value)
+    return clean, unknown
+
+
+def clamp_values(values):
+    """Values from a caller (operator, command line) made safe: out of range or
+    non-finite numbers fall back into range, a zero wind becomes +Y.
+
+    Unlike `check_values` this never refuses: NaN and infinities become the
+    nearest bound or the default.
+    """
+    safe = {}
+    for key, value in values.items():
+        field = BY_KEY[key]
+        items = (value,) if field.kind == "float" else tuple(value)
+        fixed = []
+        for number, default in zip(items, (field.default,) if field.kind == "float" else field.default):
+            number = float(number)
+            if math.isnan(number):
+                number = default
+            fixed.append(min(max(number, field.min), field.max))
+        safe[key] = check_value(field, fixed[0] if field.kind == "float" else fixed)
+    return safe

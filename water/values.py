@@ -1,0 +1,47 @@
+"""The water's values live on its material's `Water Surface` group node: one
+source of truth that the panel shows, presets fill and the `.blend` keeps."""
+
+from ..nodes.material import water_node
+from ..presets import schema
+
+
+def water_material(obj):
+    """The first material of `obj` with a `Water Surface` node, or None."""
+    if obj is None or obj.type != "MESH":
+        return None
+    for slot in obj.material_slots:
+        if water_node(slot.material) is not None:
+            return slot.material
+    return None
+
+
+def is_water(obj):
+    return water_material(obj) is not None
+
+
+def read_values(material):
+    """The shader values of a water material, keyed as in presets."""
+    node = water_node(material)
+    values = {}
+    for field in schema.SHADER_FIELDS:
+        value = node.inputs[field.socket].default_value
+        if field.kind == "float":
+            values[field.key] = float(value)
+        else:
+            values[field.key] = tuple(float(v) for v in value[: 2 if field.kind == "vec2" else 3])
+    return values
+
+
+def write_values(material, values):
+    """Sets the shader values in `values` (preset keys; `size` is ignored), clamped first."""
+    node = water_node(material)
+    safe = schema.clamp_values({k: v for k, v in values.items() if k != schema.SIZE.key})
+    for key, value in safe.items():
+        socket = node.inputs[schema.BY_KEY[key].socket]
+        if schema.BY_KEY[key].kind == "vec2":
+            socket.default_value = (value[0], value[1], 0.0)
+        elif schema.BY_KEY[key].kind == "color":
+            socket.default_value = (*value, 1.0)
+        else:
+            socket.default_value = value
+    return safe
