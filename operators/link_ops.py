@@ -22,7 +22,7 @@ def _image_items(_self, _context):
     ] + [
         (image.name, image.name, f"Use '{image.name}' as the normal map", "IMAGE_DATA", i + 1)
         for i, image in enumerate(bpy.data.images)
-        if image.type == "IMAGE" and image.name != "Water Surface Bump"
+        if image.type not in {"RENDER_RESULT", "COMPOSITING"} and image.name != "Water Surface Bump"
     ]
     return _items["image"]
 

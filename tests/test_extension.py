@@ -84,9 +84,12 @@ def test_disable_enable_cycles_leave_nothing_behind(addon):
         _assert_same(disabled, _registry())
     addon_utils.enable(module, default_set=True)
     _assert_same(enabled, _registry())
-    # Still works: the engine lookup and the panel are live again.
-    assert harness.addon("engine").eevee_engine_id() in {"BLENDER_EEVEE", "BLENDER_EEVEE_NEXT"}
+    # Still works: the panel is back and the operator adds water with its mirror set-up.
     assert hasattr(bpy.types, "VIEW3D_PT_water_surface")
+    harness.clean_scene()
+    assert bpy.ops.object.water_surface_add() == {"FINISHED"}
+    assert harness.addon("water.values").is_water(bpy.context.active_object)
+    assert harness.addon("water.mirror").find_probe(bpy.context.active_object) is not None
 
 
 @pytest.mark.render

@@ -120,6 +120,14 @@ def render(scene, path, exr=False):
     scene.render.use_file_extension = False
     with bpy.context.temp_override(scene=scene):
         bpy.ops.render.render(write_still=True, scene=scene.name)
+    return load_image(path)
+
+
+def load_image(path):
+    """An image file's pixels as float32 (H, W, 4), top row first."""
+    import bpy
+    import numpy as np
+
     image = bpy.data.images.load(str(path), check_existing=False)
     try:
         width, height = image.size
