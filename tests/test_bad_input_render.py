@@ -5,9 +5,9 @@ import math
 import bpy
 import numpy as np
 import pytest
+from test_add_water import BAD_INPUTS
 
 import harness
-from test_add_water import BAD_INPUTS
 
 pytestmark = pytest.mark.render
 

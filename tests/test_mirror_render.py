@@ -77,7 +77,7 @@ def _is(color, expected, tolerance=0.25):
 
 
 def _still_water(camera, point, reflected, refracted=SKY):
-    """The reference model on still water at `point`: (1 - F) * reflected + F * refracted, F = dot(eye, up)."""
+    """The model on still water at `point`: (1 - F) * reflected + F * refracted, F = dot(eye, up)."""
     eye = Vector(camera.matrix_world.translation) - Vector(point)
     f = eye.normalized().z
     return (1 - f) * np.asarray(reflected) + f * np.asarray(refracted)

@@ -108,7 +108,6 @@ def render(scene, path, exr=False):
     PNG gives display values (what a person sees); 32-bit EXR gives exact linear values.
     """
     import bpy
-    import numpy as np
 
     settings = scene.render.image_settings
     settings.file_format = "OPEN_EXR" if exr else "PNG"
