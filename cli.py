@@ -38,8 +38,16 @@ def _parser():
     add.add_argument("--no-mirror", action="store_true", help="skip the mirror set-up")
     for field in schema.FIELDS:
         option = "--" + field.key.replace("_", "-")
-        width = {"float": None, "vec2": 2, "color": 3}[field.kind]
-        add.add_argument(option, type=float, nargs=width, dest=field.key, help=field.tooltip)
+        if field.kind == "bool":
+            add.add_argument(
+                option, action=argparse.BooleanOptionalAction, dest=field.key, help=field.tooltip
+            )
+        elif field.kind == "choice":
+            add.add_argument(option, choices=field.choices, dest=field.key, help=field.tooltip)
+        else:
+            width = {"float": None, "int": None, "vec2": 2, "color": 3}[field.kind]
+            kind = int if field.kind == "int" else float
+            add.add_argument(option, type=kind, nargs=width, dest=field.key, help=field.tooltip)
 
     render = commands.add_parser("render", help="render one frame of a saved .blend")
     render.add_argument("source", help="the .blend to render")

@@ -1,9 +1,19 @@
 """Node groups and the water material, each group described as data and built by one builder."""
 
-from . import bump_uv, water_surface, wind_frame
+from . import bump_uv, ocean, water_surface, water_waves, wind_frame
 from .builder import NodeGroupError, ensure_group
 
-SPECS = {spec.name: spec for spec in (wind_frame.SPEC, bump_uv.SPEC, water_surface.SPEC)}
+SPECS = {
+    spec.name: spec
+    for spec in (
+        wind_frame.SPEC,
+        bump_uv.SPEC,
+        water_surface.SPEC,
+        water_waves.SPEC,
+        ocean.NORMAL_SPEC,
+        ocean.SHADE_SPEC,
+    )
+}
 
 __all__ = ("SPECS", "NodeGroupError", "ensure_group")
 

@@ -41,6 +41,8 @@ def ensure_group(spec, specs, name=None, image=None):
     created = tree is None
     if created:
         tree = bpy.data.node_groups.new(name, spec.tree_type)
+    if spec.tree_type == "GeometryNodeTree":
+        tree.is_modifier = True  # offered in the Add Modifier menu
     try:
         _sync_interface(tree, spec)
         _rebuild_nodes(tree, spec, image)

@@ -10,6 +10,7 @@ from .preset_ops import (
     OBJECT_OT_water_surface_preset_apply,
     OBJECT_OT_water_surface_preset_remove,
 )
+from .waves_ops import OBJECT_OT_water_waves_add
 
 classes = (
     OBJECT_OT_water_surface_add,
@@ -19,6 +20,7 @@ classes = (
     OBJECT_OT_water_surface_preset_remove,
     OBJECT_OT_water_surface_sun_set,
     OBJECT_OT_water_surface_bump_set,
+    OBJECT_OT_water_waves_add,
 )
 
 _register_classes, _unregister_classes = bpy.utils.register_classes_factory(classes)

@@ -17,6 +17,15 @@ def field_property(key):
         return bpy.props.FloatVectorProperty(
             size=3, default=field.default, min=field.min, max=field.max, subtype="COLOR", **common
         )
+    if field.kind == "int":
+        return bpy.props.IntProperty(
+            default=field.default, min=field.min, max=field.max, soft_max=512, **common
+        )
+    if field.kind == "bool":
+        return bpy.props.BoolProperty(default=field.default, **common)
+    if field.kind == "choice":
+        items = [(choice, choice.title(), field.tooltip) for choice in field.choices]
+        return bpy.props.EnumProperty(items=items, default=field.default, **common)
     extra = {"unit": "LENGTH", "subtype": "DISTANCE"} if key == "size" else {}
     soft = {"soft_max": 1000.0} if key == "size" else {}
     return bpy.props.FloatProperty(

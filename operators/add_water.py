@@ -43,7 +43,10 @@ class OBJECT_OT_water_surface_add(object_utils.AddObjectHelper, bpy.types.Operat
         default=0,
         update=_apply_preset,
     )
+    shading: field_property("shading")
     size: field_property("size")
+    resolution: field_property("resolution")
+    waves: field_property("waves")
     wave_height: field_property("wave_height")
     wave_length: field_property("wave_length")
     wind_direction: field_property("wind_direction")
@@ -72,6 +75,10 @@ class OBJECT_OT_water_surface_add(object_utils.AddObjectHelper, bpy.types.Operat
         layout.prop(self, "location")
         layout.prop(self, "rotation")
 
+    def _given(self, key):
+        value = getattr(self, key)
+        return value if isinstance(value, (bool, int, float, str)) else tuple(value)
+
     def execute(self, context):
         try:
             preset = presets.get(self.preset)
@@ -80,12 +87,10 @@ class OBJECT_OT_water_surface_add(object_utils.AddObjectHelper, bpy.types.Operat
             return {"CANCELLED"}
         # Values not given take the preset's; then all are clamped and shown as used.
         values = {
-            key: getattr(self, key) if self.properties.is_property_set(key) else preset.values[key]
+            key: self._given(key) if self.properties.is_property_set(key) else preset.values[key]
             for key in KEYS
         }
-        values = schema.clamp_values(
-            {k: tuple(v) if not isinstance(v, float) else v for k, v in values.items()}
-        )
+        values = schema.clamp_values(values)
         for key, value in values.items():
             setattr(self, key, value)
         self.ran = True
@@ -99,10 +104,13 @@ class OBJECT_OT_water_surface_add(object_utils.AddObjectHelper, bpy.types.Operat
             bpy.ops.object.mode_set(mode="OBJECT")
             self.report({"INFO"}, "Switched to Object Mode to add the water")
 
-        obj = object_utils.object_data_add(context, new_water_mesh("Water", values["size"]), operator=self)
+        mesh = new_water_mesh("Water", values["size"], values["resolution"])
+        obj = object_utils.object_data_add(context, mesh, operator=self)
         material = dress_water(obj, context.scene, values)
         message = f"Added '{obj.name}' ({preset.name}, {values['size']:g} m) with material '{material.name}'"
-        if self.mirror_setup:
+        if self.mirror_setup and values["shading"] == "ocean":
+            message += "; the ocean reflects the world's sky, no mirror set-up needed"
+        elif self.mirror_setup:
             changes = mirror.setup_mirror(context.scene, obj)
             message += "; mirror set-up: " + ", ".join(changes)
         self.report({"INFO"}, message)

@@ -21,12 +21,13 @@ class Field:
 
     key: str
     socket: str | None
-    kind: str  # "float", "vec2" (X/Y of a vector socket) or "color" (RGB of a colour socket)
+    kind: str  # "float", "vec2" (X/Y of a vector socket), "color" (RGB), "int", "bool" or "choice"
     default: object
     min: float
     max: float
     label: str
     tooltip: str
+    choices: tuple = ()
 
 
 def _from_socket(key, socket_name, kind):
@@ -44,8 +45,36 @@ SIZE = Field(
     "size", None, "float", 128.0, 0.01, 100000.0, "Size", "Edge length of the water plane (the seeds' 128)"
 )
 
+RESOLUTION = Field(
+    "resolution",
+    None,
+    "int",
+    2,
+    2,
+    2048,
+    "Resolution",
+    "Vertices along each side of the plane (2: one quad; waves need many)",
+)
+WAVES = Field(
+    "waves", None, "bool", False, 0, 1, "Waves", "Lift the plane with the four-sine-wave Water Waves modifier"
+)
+SHADING = Field(
+    "shading",
+    None,
+    "choice",
+    "lake",
+    0,
+    0,
+    "Shading",
+    "Lake: traced mirror and refraction; Ocean: the sky reflected over deep blue",
+    choices=("lake", "ocean"),
+)
+
 FIELDS = (
+    SHADING,
     SIZE,
+    RESOLUTION,
+    WAVES,
     _from_socket("wave_height", "Wave Height", "float"),
     _from_socket("wave_length", "Wave Length", "float"),
     _from_socket("wind_direction", "Wind Direction", "vec2"),
@@ -83,6 +112,19 @@ def check_value(field, value):
     """`value` as the field's type, clamped to its range; PresetError when ill-typed."""
     if field.kind == "float":
         return _clamp(_number(value, field.key), field)
+    if field.kind == "int":
+        number = _number(value, field.key)
+        if not math.isfinite(number) or number != int(number):
+            raise PresetError(f"'{field.key}' must be a whole number, not {value}")
+        return int(_clamp(number, field))
+    if field.kind == "bool":
+        if not isinstance(value, bool):
+            raise PresetError(f"'{field.key}' must be true or false, not {value!r}")
+        return value
+    if field.kind == "choice":
+        if value not in field.choices:
+            raise PresetError(f"'{field.key}' must be one of {', '.join(field.choices)}, not {value!r}")
+        return value
     width = 2 if field.kind == "vec2" else 3
     if not isinstance(value, (list, tuple)) or len(value) != width:
         raise PresetError(f"'{field.key}' must be a list of {width} numbers")
@@ -120,6 +162,14 @@ def clamp_values(values):
     safe = {}
     for key, value in values.items():
         field = BY_KEY[key]
+        if field.kind in ("bool", "choice"):
+            safe[key] = check_value(field, value)
+            continue
+        if field.kind == "int":
+            number = float(value)
+            number = field.default if math.isnan(number) else min(max(number, field.min), field.max)
+            safe[key] = int(round(number))
+            continue
         items = (value,) if field.kind == "float" else tuple(value)
         fixed = []
         for number, default in zip(items, (field.default,) if field.kind == "float" else field.default):

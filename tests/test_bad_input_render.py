@@ -38,6 +38,8 @@ def test_bad_input_still_renders_lit_water(view, render, key, given, used):
     if not on_water.any():  # a clamped 1 cm plane: still a finite image, nothing more to see
         assert math.isclose(water.dimensions.x, 0.01, rel_tol=1e-3)
         return
-    # Water shows the sky and its tint: bright, not black.
+    # Water shows the sky and its tint: lit everywhere, not black anywhere. (The dull tint alone
+    # gives 0.2 * mean(0.3, 0.3, 0.5) = 0.073; a steep bump can hide the sky from single pixels.)
     luminance = pixels[..., :3].mean(axis=-1)
-    assert luminance[on_water].min() > 0.1, (key, given, luminance[on_water].min())
+    assert luminance[on_water].min() > 0.05, (key, given, luminance[on_water].min())
+    assert luminance[on_water].mean() > 0.2, (key, given, luminance[on_water].mean())

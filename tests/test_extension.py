@@ -7,7 +7,7 @@ import pytest
 import harness
 
 # Paths a built zip may hold: the add-on and nothing else.
-ADDON_PARTS = ("__init__.py", "blender_manifest.toml", "operators/", "nodes/", "presets/", "ui/")
+ADDON_PARTS = ("__init__.py", "blender_manifest.toml", "operators/", "nodes/", "presets/", "ui/", "water/")
 TOOLING = ("tests/", "tools/", ".ci/", "bench/", "docs/", "out/", "README", "pyproject", "venv")
 
 

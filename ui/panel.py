@@ -7,9 +7,12 @@ the node is the one source of truth, so what the `.blend` holds is what shows.
 import bpy
 
 from ..nodes.material import bump_image, glint_sun, water_node
+from ..nodes.ocean_material import ocean_nodes
 from ..nodes.water_surface import DEBUG_VIEWS
+from ..nodes.water_waves import WAVE_COUNT
 from ..water.mirror import find_probe
 from ..water.values import water_material
+from ..water.waves import input_property, wave_modifier
 
 _SECTIONS = (
     ("Waves", "MOD_WAVE", ("Wave Height", "Wave Length", "Bump Strength")),
@@ -52,6 +55,10 @@ class VIEW3D_PT_water_surface(bpy.types.Panel):
             return
         node = water_node(material)
         layout.label(text=f"Material: {material.name}", icon="MATERIAL")
+        if node is None:
+            self.draw_ocean(layout, material)
+            self.draw_waves(layout, context.active_object)
+            return
 
         row = layout.row(align=True)
         row.menu("WATER_MT_presets", text="Presets", icon="PRESET")
@@ -88,6 +95,8 @@ class VIEW3D_PT_water_surface(bpy.types.Panel):
         names = {number: label for number, _id, label, _tip in DEBUG_VIEWS}
         layout.prop(view, "default_value", text=f"Debug: {names.get(view.default_value, '?')}")
 
+        self.draw_waves(layout, context.active_object)
+
         box = layout.box()
         probe = find_probe(context.active_object)
         eevee = context.scene.eevee
@@ -97,3 +106,35 @@ class VIEW3D_PT_water_surface(bpy.types.Panel):
             icon="CHECKMARK" if ready else "ERROR",
         )
         box.operator("object.water_mirror_setup", icon="MOD_MIRROR")
+
+    def draw_ocean(self, layout, material):
+        """The ocean shading's inputs: bump taps, deep colour, glint."""
+        normal, shade = ocean_nodes(material)
+        box = layout.box()
+        box.label(text="Ocean", icon="MOD_OCEAN")
+        box.use_property_split = True
+        for node, name in (
+            (normal, "Bump Strength"),
+            (normal, "Tex Stretch"),
+            (shade, "Deep Color"),
+            (shade, "Glint Power"),
+        ):
+            box.prop(node.inputs[name], "default_value", text=name)
+
+    def draw_waves(self, layout, obj):
+        """The wave modifier's inputs, wave by wave, or a button to add it."""
+        modifier = wave_modifier(obj)
+        box = layout.box()
+        if modifier is None:
+            box.operator("object.water_waves_add", icon="MOD_WAVE")
+            return
+        box.label(text="Waves", icon="MOD_WAVE")
+        box.use_property_split = True
+        for number in range(1, WAVE_COUNT + 1):
+            col = box.column(align=True)
+            for name in ("Amplitude", "Wavelength", "Speed"):
+                col.prop(*input_property(modifier, f"{name} {number}"), text=f"{name} {number}")
+            owner, path = input_property(modifier, f"Direction {number}")
+            row = col.row(align=True)
+            row.prop(owner, path, index=0, text=f"Direction {number} X")
+            row.prop(owner, path, index=1, text="Y")

@@ -13,6 +13,7 @@ import bpy
 
 from ..engine import eevee_engine_id, enable_ray_tracing
 from .values import water_material
+from .waves import amplitude_sum, wave_modifier
 
 PROBE_TAG = "water_surface_mirror"  # custom property naming the water a probe mirrors
 PROBE_LIFT = 0.01  # metres above the water
@@ -80,7 +81,7 @@ def setup_mirror(scene, water):
         scene.render.engine = eevee_engine_id()
         changes.append("render engine set to EEVEE")
     changes += [_SETTING_NAMES[name] for name in enable_ray_tracing(scene)]
-    if not material.use_raytrace_refraction:
+    if not material.use_raytrace_refraction and material.node_tree.nodes.get("Water Surface"):
         material.use_raytrace_refraction = True
         changes.append(f"ray-traced refraction on for '{material.name}'")
     if scene.world is None:
@@ -97,6 +98,12 @@ def setup_mirror(scene, water):
     if not water.hide_probe_plane:
         water.hide_probe_plane = True
         changes.append(f"'{water.name}' hidden from planar captures")
-    _probe, what = _ensure_probe(scene, water)
+    probe, what = _ensure_probe(scene, water)
     changes.append(what)
+    modifier = wave_modifier(water)
+    if modifier is not None:  # the probe must reach the crests and the troughs
+        reach = amplitude_sum(modifier) + 4 * PROBE_LIFT
+        if probe.data.influence_distance < reach:
+            probe.data.influence_distance = reach
+            changes.append(f"probe influence widened to {reach:.2f} m for the waves")
     return changes

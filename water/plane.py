@@ -1,41 +1,65 @@
-"""A water plane: a mesh with UVs and its own water material."""
+"""A water plane: a grid with UVs, its own water material, and optionally waves."""
 
-import bmesh
 import bpy
+import numpy as np
 from mathutils import Euler, Matrix, Vector
 
 from .. import presets
 from ..nodes.material import make_water_material
+from ..nodes.ocean_material import make_ocean_material
 from ..presets import schema
-from . import mirror
+from . import mirror, waves
 from .values import write_values
 
+BYTES_PER_VERTEX = 400  # mesh, wave attribute and evaluated copy, measured with margin
 
-def new_water_mesh(name, size):
-    """A square of edge `size` in the XY plane, centred, UVs 0..1 across it."""
-    size = schema.clamp_values({"size": size})["size"]
-    mesh = bpy.data.meshes.new(name)
-    bm = bmesh.new()
+
+def max_resolution():
+    """Vertices per side a grid may have: the schema's cap, or less on a machine short of memory."""
     try:
-        uv_layer = bm.loops.layers.uv.new("UVMap")
-        half = size / 2
-        verts = [bm.verts.new((x * half, y * half, 0.0)) for x, y in ((-1, -1), (1, -1), (1, 1), (-1, 1))]
-        face = bm.faces.new(verts)
-        for loop in face.loops:
-            co = loop.vert.co
-            loop[uv_layer].uv = (co.x / size + 0.5, co.y / size + 0.5)
-        bm.to_mesh(mesh)
-    finally:
-        bm.free()
+        with open("/proc/meminfo", encoding="ascii") as meminfo:
+            available = next(
+                int(line.split()[1]) * 1024 for line in meminfo if line.startswith("MemAvailable")
+            )
+    except (OSError, StopIteration, ValueError):
+        return schema.RESOLUTION.max
+    return int(min(schema.RESOLUTION.max, max(schema.RESOLUTION.min, (available / BYTES_PER_VERTEX) ** 0.5)))
+
+
+def new_water_mesh(name, size, resolution=2):
+    """A square grid of edge `size` in the XY plane, `resolution` vertices a side, UVs 0..1 across it."""
+    size = schema.clamp_values({"size": size})["size"]
+    n = min(schema.clamp_values({"resolution": resolution})["resolution"], max_resolution())
+    axis = np.linspace(-size / 2, size / 2, n)
+    x, y = np.meshgrid(axis, axis)
+    co = np.column_stack([x.ravel(), y.ravel(), np.zeros(n * n)])
+    corner = (np.arange(n - 1)[:, None] * n + np.arange(n - 1)[None, :]).ravel()
+    quads = np.column_stack([corner, corner + 1, corner + n + 1, corner + n])  # counter-clockwise: +Z up
+    mesh = bpy.data.meshes.new(name)
+    mesh.vertices.add(n * n)
+    mesh.vertices.foreach_set("co", co.astype(np.float32).ravel())
+    mesh.loops.add(quads.size)
+    mesh.loops.foreach_set("vertex_index", quads.astype(np.int32).ravel())
+    mesh.polygons.add(len(quads))
+    mesh.polygons.foreach_set("loop_start", (np.arange(len(quads)) * 4).astype(np.int32))
+    uv = mesh.uv_layers.new(name="UVMap")
+    uv.data.foreach_set("uv", (co[quads.ravel(), :2] / size + 0.5).astype(np.float32).ravel())
+    mesh.update(calc_edges=True)
+    mesh.polygons.foreach_set("use_smooth", np.ones(len(quads), dtype=bool))
     return mesh
 
 
 def dress_water(obj, scene, values):
-    """Gives `obj` a new water material set to `values` (preset keys); returns the material."""
-    material = make_water_material(name=obj.name, scene=scene)
-    write_values(material, values)
+    """Gives `obj` a new material (lake or ocean shading) set to `values`, and the waves if asked."""
+    if values.get("shading", "lake") == "ocean":
+        material = make_ocean_material(name=obj.name, scene=scene)
+    else:
+        material = make_water_material(name=obj.name, scene=scene)
+        write_values(material, values)
     obj.data.materials.clear()
     obj.data.materials.append(material)
+    if values.get("waves"):
+        waves.add_waves(obj)
     return material
 
 
@@ -64,15 +88,17 @@ def add_water(
 ):
     """Adds a water plane to `scene` (default: the context's) and returns (object, changes).
 
-    `overrides` are preset keys (`size`, `wave_height`, ...) that replace the
-    preset's values; every value is clamped into range. `changes` lists what
-    the mirror set-up changed in the scene.
+    `overrides` are preset keys (`size`, `wave_height`, `resolution`, `waves`,
+    `shading`, ...) that replace the preset's values; every value is clamped
+    into range. `changes` lists what the mirror set-up changed in the scene.
     """
     scene = scene or bpy.context.scene
     values = resolve_values(preset, **overrides)
-    obj = bpy.data.objects.new(name, new_water_mesh(name, values["size"]))
+    obj = bpy.data.objects.new(name, new_water_mesh(name, values["size"], values["resolution"]))
     (collection or scene.collection).objects.link(obj)
     obj.matrix_world = Matrix.LocRotScale(Vector(location), Euler(rotation), None)
     dress_water(obj, scene, values)
-    changes = mirror.setup_mirror(scene, obj) if mirror_setup else []
+    changes = []
+    if mirror_setup and values["shading"] == "lake":
+        changes = mirror.setup_mirror(scene, obj)
     return obj, changes

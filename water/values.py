@@ -2,15 +2,16 @@
 source of truth that the panel shows, presets fill and the `.blend` keeps."""
 
 from ..nodes.material import water_node
+from ..nodes.ocean_material import ocean_nodes
 from ..presets import schema
 
 
 def water_material(obj):
-    """The first material of `obj` with a `Water Surface` node, or None."""
+    """The first material of `obj` made by the add-on (lake or ocean shading), or None."""
     if obj is None or obj.type != "MESH":
         return None
     for slot in obj.material_slots:
-        if water_node(slot.material) is not None:
+        if water_node(slot.material) is not None or ocean_nodes(slot.material) is not None:
             return slot.material
     return None
 
@@ -20,9 +21,11 @@ def is_water(obj):
 
 
 def read_values(material):
-    """The shader values of a water material, keyed as in presets."""
+    """The shader values of a lake material, keyed as in presets ({} for the ocean's)."""
     node = water_node(material)
     values = {}
+    if node is None:
+        return values
     for field in schema.SHADER_FIELDS:
         value = node.inputs[field.socket].default_value
         if field.kind == "float":
@@ -35,7 +38,10 @@ def read_values(material):
 def write_values(material, values):
     """Sets the shader values in `values` (preset keys; `size` is ignored), clamped first."""
     node = water_node(material)
-    safe = schema.clamp_values({k: v for k, v in values.items() if k != schema.SIZE.key})
+    if node is None:  # ocean shading: its values live in its own groups
+        return {}
+    shader_keys = {field.key for field in schema.SHADER_FIELDS}
+    safe = schema.clamp_values({k: v for k, v in values.items() if k in shader_keys})
     for key, value in safe.items():
         socket = node.inputs[schema.BY_KEY[key].socket]
         if schema.BY_KEY[key].kind == "vec2":

@@ -1,0 +1,241 @@
+"""The ocean's shading (SPEC section 2, pixel part), as two shader groups.
+
+`Water Ocean Normal` perturbs the wave normal (the `water_normal` attribute the
+`Water Waves` modifier stores, or the surface normal without it) by three taps
+of the bump map and gives the direction the eye reflects into. The material
+looks the sky up in that direction (the world's environment image, or its
+colour) and hands it to `Water Ocean Shade`:
+`F = dot(-eye, n) / 2 + 0.5`, `deep * F + sky * (1 - F) + pow(mean(sky), Glint Power)`,
+unlit, as the seeds draw it. Two groups, because a shader group cannot hold the
+world's image: the lookup sits between them in the material.
+"""
+
+from .spec import BUMP_IMAGE, GroupSpec, Node, Socket, math, vmath
+from .water_waves import NORMAL_ATTRIBUTE
+
+NORMAL_NAME = "Water Ocean Normal"
+SHADE_NAME = "Water Ocean Shade"
+DEEP_BLUE = (0.0, 0.2, 0.4, 1.0)
+
+
+def _tap(key, column):
+    return Node("ShaderNodeTexImage", column, {"extension": "REPEAT", "image": BUMP_IMAGE}, label=key)
+
+
+NORMAL_SPEC = GroupSpec(
+    name=NORMAL_NAME,
+    version=1,
+    description="Wave normal plus three bump taps; the direction the eye reflects into",
+    inputs=(
+        Socket(
+            "Bump Strength",
+            "NodeSocketFloat",
+            0.5,
+            min=0.0,
+            max=10.0,
+            tooltip="Tilt of the three bump taps (the seeds' 0.5)",
+        ),
+        Socket(
+            "Tex Stretch",
+            "NodeSocketFloat",
+            4.0,
+            min=0.001,
+            max=1000.0,
+            tooltip="Bump taps per UV unit (the seeds' 4)",
+        ),
+        Socket(
+            "Time",
+            "NodeSocketFloat",
+            0.0,
+            subtype="TIME_ABSOLUTE",
+            tooltip="Seconds; the material drives it from the scene clock",
+        ),
+    ),
+    outputs=(
+        Socket("Normal", "NodeSocketVector", tooltip="Shading normal n, world space"),
+        Socket("Reflection", "NodeSocketVector", tooltip="reflect(eye, n): where the sky is looked up"),
+    ),
+    nodes={
+        # The wave normal, world space; the surface's own where the mesh has no attribute.
+        "attribute": Node(
+            "ShaderNodeAttribute", 1, {"attribute_name": NORMAL_ATTRIBUTE}, label="wave normal"
+        ),
+        "geometry": Node("ShaderNodeNewGeometry", 1),
+        "coords": Node("ShaderNodeTexCoord", 1),
+        "to_world": Node(
+            "ShaderNodeVectorTransform",
+            2,
+            {"vector_type": "NORMAL", "convert_from": "OBJECT", "convert_to": "WORLD"},
+        ),
+        "has_length": vmath("LENGTH", 2, "|attribute|"),
+        "has": math("GREATER_THAN", 3, "stored?", b=0.5),
+        "hasnt": math("SUBTRACT", 4, "1 - stored", a=1.0),
+        "wave_part": vmath("SCALE", 5, "stored normal"),
+        "geo_part": vmath("SCALE", 5, "surface normal"),
+        "wave_sum": vmath("ADD", 6),
+        "N": vmath("NORMALIZE", 7, "N"),
+        # Three taps at the scrolled UV: uv + t / 50 * (-1, 0).
+        "drift": math("MULTIPLY", 2, "-t / 50", b=-1.0 / 50.0),
+        "drift_v": Node("ShaderNodeCombineXYZ", 3, label="(-t / 50, 0)"),
+        "uv": vmath("ADD", 4, "scrolled uv"),
+        "uv_split": Node("ShaderNodeSeparateXYZ", 5),
+        "uv_swap": Node("ShaderNodeCombineXYZ", 6, label="uv.yx"),
+        "stretch_2": math("MULTIPLY", 5, "1.8 stretch", b=1.8),
+        "stretch_3": math("MULTIPLY", 5, "3.1 stretch", b=3.1),
+        "uv_1": vmath("SCALE", 7, "stretch * uv"),
+        "uv_2": vmath("SCALE", 7, "1.8 stretch * uv.yx"),
+        "uv_3": vmath("SCALE", 7, "3.1 stretch * uv"),
+        "tap_1": _tap("tap 1", 8),
+        "tap_2": _tap("tap 2", 8),
+        "tap_3": _tap("tap 3", 8),
+        "sum_12": vmath("ADD", 9),
+        "sum_123": vmath("ADD", 10),
+        "centre": vmath("ADD", 11, "sum of (tap - 0.5)", b=(-1.5, -1.5, -1.5)),
+        "strength": Node("ShaderNodeCombineXYZ", 11, values={"Z": 1.0}, label="(b, b, 1)"),
+        "tilt": vmath("MULTIPLY", 12, ".rg *= Bump Strength"),
+        "t": vmath("NORMALIZE", 13, "tangent-space normal"),
+        "t_split": Node("ShaderNodeSeparateXYZ", 14),
+        # A tangent frame on the wave: B along +X, T = N x B.
+        "N_split": Node("ShaderNodeSeparateXYZ", 8),
+        "x_on_N": vmath("SCALE", 9, "N.x N"),
+        "B_raw": vmath("SUBTRACT", 10, "X - N.x N", a=(1.0, 0.0, 0.0)),
+        "B": vmath("NORMALIZE", 11, "B"),
+        "T": vmath("CROSS_PRODUCT", 12, "T = N x B"),
+        "along_B": vmath("SCALE", 15, "t.x B"),
+        "along_T": vmath("SCALE", 15, "t.y T"),
+        "along_N": vmath("SCALE", 15, "t.z N"),
+        "n_BT": vmath("ADD", 16),
+        "n_raw": vmath("ADD", 17),
+        "n": vmath("NORMALIZE", 18, "n"),
+        "eye": vmath("SCALE", 18, "eye = -incoming", scale=-1.0),
+        "reflect": vmath("REFLECT", 19, "reflect(eye, n)"),
+    },
+    links=(
+        ("attribute:Vector", "to_world:Vector"),
+        ("attribute:Vector", "has_length:#0"),
+        ("has_length:Value", "has:#0"),
+        ("has:Value", "hasnt:#1"),
+        ("to_world:Vector", "wave_part:#0"),
+        ("has:Value", "wave_part:Scale"),
+        ("geometry:Normal", "geo_part:#0"),
+        ("hasnt:Value", "geo_part:Scale"),
+        ("wave_part:Vector", "wave_sum:#0"),
+        ("geo_part:Vector", "wave_sum:#1"),
+        ("wave_sum:Vector", "N:#0"),
+        ("input:Time", "drift:#0"),
+        ("drift:Value", "drift_v:X"),
+        ("coords:UV", "uv:#0"),
+        ("drift_v:Vector", "uv:#1"),
+        ("uv:Vector", "uv_split:Vector"),
+        ("uv_split:Y", "uv_swap:X"),
+        ("uv_split:X", "uv_swap:Y"),
+        ("input:Tex Stretch", "stretch_2:#0"),
+        ("input:Tex Stretch", "stretch_3:#0"),
+        ("uv:Vector", "uv_1:#0"),
+        ("input:Tex Stretch", "uv_1:Scale"),
+        ("uv_swap:Vector", "uv_2:#0"),
+        ("stretch_2:Value", "uv_2:Scale"),
+        ("uv:Vector", "uv_3:#0"),
+        ("stretch_3:Value", "uv_3:Scale"),
+        ("uv_1:Vector", "tap_1:Vector"),
+        ("uv_2:Vector", "tap_2:Vector"),
+        ("uv_3:Vector", "tap_3:Vector"),
+        ("tap_1:Color", "sum_12:#0"),
+        ("tap_2:Color", "sum_12:#1"),
+        ("sum_12:Vector", "sum_123:#0"),
+        ("tap_3:Color", "sum_123:#1"),
+        ("sum_123:Vector", "centre:#0"),
+        ("input:Bump Strength", "strength:X"),
+        ("input:Bump Strength", "strength:Y"),
+        ("centre:Vector", "tilt:#0"),
+        ("strength:Vector", "tilt:#1"),
+        ("tilt:Vector", "t:#0"),
+        ("t:Vector", "t_split:Vector"),
+        ("N:Vector", "N_split:Vector"),
+        ("N:Vector", "x_on_N:#0"),
+        ("N_split:X", "x_on_N:Scale"),
+        ("x_on_N:Vector", "B_raw:#1"),
+        ("B_raw:Vector", "B:#0"),
+        ("N:Vector", "T:#0"),
+        ("B:Vector", "T:#1"),
+        ("B:Vector", "along_B:#0"),
+        ("t_split:X", "along_B:Scale"),
+        ("T:Vector", "along_T:#0"),
+        ("t_split:Y", "along_T:Scale"),
+        ("N:Vector", "along_N:#0"),
+        ("t_split:Z", "along_N:Scale"),
+        ("along_B:Vector", "n_BT:#0"),
+        ("along_T:Vector", "n_BT:#1"),
+        ("n_BT:Vector", "n_raw:#0"),
+        ("along_N:Vector", "n_raw:#1"),
+        ("n_raw:Vector", "n:#0"),
+        ("geometry:Incoming", "eye:#0"),
+        ("eye:Vector", "reflect:#0"),
+        ("n:Vector", "reflect:#1"),
+        ("n:Vector", "output:Normal"),
+        ("reflect:Vector", "output:Reflection"),
+    ),
+)
+
+SHADE_SPEC = GroupSpec(
+    name=SHADE_NAME,
+    version=1,
+    description="Ocean colour: deep blue and the reflected sky by the ocean Fresnel, plus the glint",
+    inputs=(
+        Socket("Normal", "NodeSocketVector", (0.0, 0.0, 1.0), hide_value=True, tooltip="Shading normal n"),
+        Socket(
+            "Sky", "NodeSocketColor", (0.5, 0.7, 1.0, 1.0), tooltip="The sky seen in the reflected direction"
+        ),
+        Socket(
+            "Deep Color",
+            "NodeSocketColor",
+            DEEP_BLUE,
+            tooltip="Colour of the deep water (the seeds' deep blue)",
+        ),
+        Socket(
+            "Glint Power",
+            "NodeSocketFloat",
+            30.0,
+            min=1.0,
+            max=1000.0,
+            tooltip="The glint is mean(sky) to this power: only the brightest sky glints",
+        ),
+    ),
+    outputs=(Socket("Shader", "NodeSocketShader"),),
+    nodes={
+        "geometry": Node("ShaderNodeNewGeometry", 1),
+        "cos": vmath("DOT_PRODUCT", 2, "dot(-eye, n)"),
+        "F": math("MULTIPLY_ADD", 3, "F = dot / 2 + 0.5", b=0.5, c=0.5),
+        "one_minus_F": math("SUBTRACT", 4, "1 - F", a=1.0),
+        "deep": vmath("SCALE", 5, "deep * F"),
+        "sky": vmath("SCALE", 5, "sky * (1 - F)"),
+        "mean": vmath("DOT_PRODUCT", 5, "mean(sky)", b=(1 / 3, 1 / 3, 1 / 3)),
+        "glint": math("POWER", 6, "pow(mean, Glint Power)"),
+        "glint_v": Node("ShaderNodeCombineXYZ", 7, label="glint (white)"),
+        "water": vmath("ADD", 7),
+        "color": vmath("ADD", 8, "colour"),
+        "emit": Node("ShaderNodeEmission", 9, values={"Strength": 1.0}, label="unlit"),
+    },
+    links=(
+        ("geometry:Incoming", "cos:#0"),
+        ("input:Normal", "cos:#1"),
+        ("cos:Value", "F:#0"),
+        ("F:Value", "one_minus_F:#1"),
+        ("input:Deep Color", "deep:#0"),
+        ("F:Value", "deep:Scale"),
+        ("input:Sky", "sky:#0"),
+        ("one_minus_F:Value", "sky:Scale"),
+        ("input:Sky", "mean:#0"),
+        ("mean:Value", "glint:#0"),
+        ("input:Glint Power", "glint:#1"),
+        ("glint:Value", "glint_v:X"),
+        ("glint:Value", "glint_v:Y"),
+        ("glint:Value", "glint_v:Z"),
+        ("deep:Vector", "water:#0"),
+        ("sky:Vector", "water:#1"),
+        ("water:Vector", "color:#0"),
+        ("glint_v:Vector", "color:#1"),
+        ("color:Vector", "emit:Color"),
+        ("emit:Emission", "output:Shader"),
+    ),
+)

@@ -1,0 +1,96 @@
+"""The ocean material: wave normal and bump, the sky looked up in the reflected
+direction, and the ocean colour (groups in `ocean.py`).
+
+The sky is the world's environment image when it has one (an Environment
+Texture node in the material, as the seeds sample their sky cube), otherwise
+the world's background colour, followed by simple-expression drivers so a
+changed world shows without running anything.
+"""
+
+import bpy
+
+from . import SPECS, ocean
+from .builder import ensure_group
+from .bump_image import ensure_bump_image
+from .material import TIME_EXPRESSION, _drive
+
+OCEAN_NODE = "Water Ocean"
+NORMAL_NODE = "Water Ocean Normal"
+SKY_NODE = "Sky"
+DEFAULT_SKY = (0.5, 0.7, 1.0)
+
+
+def _world_environment(world):
+    """The world's Environment Texture node that has an image, or None."""
+    if world is None or world.node_tree is None:
+        return None
+    return next(
+        (n for n in world.node_tree.nodes if n.type == "TEX_ENVIRONMENT" and n.image is not None),
+        None,
+    )
+
+
+def _sky_node(tree, world):
+    """A node giving the sky's colour: the world's image, or its background colour."""
+    environment = _world_environment(world)
+    if environment is not None:
+        node = tree.nodes.new("ShaderNodeTexEnvironment")
+        node.image, node.projection = environment.image, environment.projection
+        node.interpolation = environment.interpolation
+        return node, node.inputs["Vector"]
+    node = tree.nodes.new("ShaderNodeRGB")
+    background = None
+    if world is not None and world.node_tree is not None:
+        background = next((n for n in world.node_tree.nodes if n.type == "BACKGROUND"), None)
+    if background is None:
+        node.outputs[0].default_value = (*(world.color if world else DEFAULT_SKY), 1.0)
+        return node, None
+    colour = background.inputs["Color"]
+    node.outputs[0].default_value = tuple(colour.default_value)
+    path = f'node_tree.nodes["{background.name}"].inputs[0].default_value'
+    for i in range(3):
+        _drive(node.outputs[0], i, "c", [("c", "WORLD", world, f"{path}[{i}]")])
+    return node, None
+
+
+def make_ocean_material(name="Ocean", scene=None):
+    """A new ocean material for a mesh with the `Water Waves` modifier (or any flat mesh)."""
+    scene = scene or bpy.context.scene
+    normal_group = ensure_group(SPECS[ocean.NORMAL_NAME], SPECS, image=ensure_bump_image())
+    shade_group = ensure_group(SPECS[ocean.SHADE_NAME], SPECS)
+    material = bpy.data.materials.new(name)
+    if bpy.app.version < (5, 0, 0):
+        material.use_nodes = True
+    tree = material.node_tree
+    tree.nodes.clear()
+    normal = tree.nodes.new("ShaderNodeGroup")
+    normal.node_tree, normal.name, normal.location, normal.width = normal_group, NORMAL_NODE, (-600, 0), 220
+    sky, lookup = _sky_node(tree, scene.world)
+    sky.name, sky.label, sky.location = SKY_NODE, "sky in the reflected direction", (-300, -150)
+    shade = tree.nodes.new("ShaderNodeGroup")
+    shade.node_tree, shade.name, shade.location, shade.width = shade_group, OCEAN_NODE, (0, 0), 220
+    output = tree.nodes.new("ShaderNodeOutputMaterial")
+    output.location = (300, 0)
+    tree.links.new(normal.outputs["Normal"], shade.inputs["Normal"])
+    if lookup is not None:
+        tree.links.new(normal.outputs["Reflection"], lookup)
+    tree.links.new(sky.outputs[0], shade.inputs["Sky"])
+    tree.links.new(shade.outputs["Shader"], output.inputs["Surface"])
+    _drive(
+        normal.inputs["Time"],
+        None,
+        TIME_EXPRESSION,
+        [("fps", "SCENE", scene, "render.fps"), ("fps_base", "SCENE", scene, "render.fps_base")],
+    )
+    return material
+
+
+def ocean_nodes(material):
+    """(normal group node, shade group node) of an ocean material, or None."""
+    if material is None or material.node_tree is None:
+        return None
+    shade = material.node_tree.nodes.get(OCEAN_NODE)
+    normal = material.node_tree.nodes.get(NORMAL_NODE)
+    if shade is None or normal is None or shade.type != "GROUP":
+        return None
+    return normal, shade

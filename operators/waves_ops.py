@@ -1,0 +1,30 @@
+"""`object.water_waves_add`: lift an existing water with the four-sine-wave modifier."""
+
+import bpy
+
+from ..water import waves
+from ..water.values import is_water
+
+
+class OBJECT_OT_water_waves_add(bpy.types.Operator):
+    """Add the Water Waves modifier (four summed sine waves) to the active water"""
+
+    bl_idname = "object.water_waves_add"
+    bl_label = "Add Waves"
+    bl_options = {"REGISTER", "UNDO"}
+
+    def execute(self, context):
+        obj = context.active_object
+        if not is_water(obj):
+            self.report({"ERROR"}, "The active object is not water (no Water Surface material)")
+            return {"CANCELLED"}
+        waves.add_waves(obj)
+        if len(obj.data.vertices) <= 4:
+            self.report(
+                {"WARNING"},
+                f"'{obj.name}' has only its corners: the waves tilt it but cannot ripple it. "
+                "Add water with a higher Resolution, or subdivide it",
+            )
+        else:
+            self.report({"INFO"}, f"Added waves to '{obj.name}'")
+        return {"FINISHED"}

@@ -1,0 +1,175 @@
+"""The ocean: `Water Waves` geometry nodes against the numpy sum of four sines, and the ocean shading."""
+
+import addon_utils
+import bpy
+import numpy as np
+import pytest
+
+import harness
+
+
+@pytest.fixture(scope="module")
+def wave_math(addon):
+    return harness.addon("nodes.wave_math")
+
+
+@pytest.fixture(scope="module")
+def waves(addon):
+    return harness.addon("water.waves")
+
+
+def _evaluated(obj):
+    """Evaluated vertex positions (N, 3) and stored wave normals (N, 3), object space."""
+    depsgraph = bpy.context.evaluated_depsgraph_get()
+    evaluated = obj.evaluated_get(depsgraph)
+    mesh = evaluated.to_mesh()
+    try:
+        count = len(mesh.vertices)
+        co = np.empty(count * 3)
+        mesh.vertices.foreach_get("co", co)
+        normal = np.empty(count * 3)
+        mesh.attributes["water_normal"].data.foreach_get("vector", normal)
+    finally:
+        evaluated.to_mesh_clear()
+    return co.reshape(-1, 3), normal.reshape(-1, 3)
+
+
+def _rest(obj):
+    co = np.empty(len(obj.data.vertices) * 3)
+    obj.data.vertices.foreach_get("co", co)
+    return co.reshape(-1, 3)
+
+
+def _seconds(scene):
+    return scene.frame_current / (scene.render.fps / scene.render.fps_base)
+
+
+def _angles(a, b):
+    return np.degrees(np.arccos(np.clip((a * b).sum(axis=1), -1.0, 1.0)))
+
+
+def test_heights_and_normals_match_the_four_sines_at_two_times(scene, wave_math):
+    bpy.ops.object.water_surface_add(preset="ocean", size=60, resolution=97)
+    ocean = bpy.context.active_object
+    rest = _rest(ocean)
+    amplitude_sum = sum(w.amplitude for w in wave_math.DEFAULT_WAVES)
+    for frame in (1, 61):
+        scene.frame_set(frame)
+        co, normal = _evaluated(ocean)
+        expected = wave_math.heights(rest[:, :2], _seconds(scene))
+        assert np.abs(co[:, 2] - expected).max() < 1e-4 * amplitude_sum, frame
+        assert np.abs(co[:, :2] - rest[:, :2]).max() < 1e-5, "points move only up and down"
+        assert _angles(normal, wave_math.normals(rest[:, :2], _seconds(scene))).max() < 1.0
+    assert np.ptp(co[:, 2]) > amplitude_sum, "real waves, not a flat sheet"
+
+
+def test_every_wave_input_counts_and_zero_amplitude_removes_a_wave(scene, wave_math, waves):
+    bpy.ops.mesh.primitive_circle_add(vertices=64, radius=20, fill_type="TRIFAN")  # any flat mesh
+    disc = bpy.context.active_object
+    modifier = waves.add_waves(disc)
+    changed = list(wave_math.DEFAULT_WAVES)
+    changed[1] = wave_math.Wave(0.0, 5.0, 2.0, (-1.0, -0.5))
+    changed[2] = wave_math.Wave(0.9, 3.0, -1.0, (0.3, 1.0))
+    waves.set_wave_input(modifier, "Amplitude 2", 0.0)
+    waves.set_wave_input(modifier, "Amplitude 3", 0.9)
+    waves.set_wave_input(modifier, "Wavelength 3", 3.0)
+    waves.set_wave_input(modifier, "Speed 3", -1.0)
+    waves.set_wave_input(modifier, "Direction 3", (0.3, 1.0, 0.0))
+    scene.frame_set(30)
+    co, normal = _evaluated(disc)
+    rest = _rest(disc)
+    t = _seconds(scene)
+    assert np.abs(co[:, 2] - wave_math.heights(rest[:, :2], t, changed)).max() < 1e-4
+    assert _angles(normal, wave_math.normals(rest[:, :2], t, changed)).max() < 1.0
+    assert np.abs(co[:, 2] - wave_math.heights(rest[:, :2], t)).max() > 0.1, "the inputs changed the waves"
+
+
+def test_with_every_amplitude_zero_the_grid_is_flat(scene, waves):
+    bpy.ops.object.water_surface_add(preset="ocean", size=30, resolution=33)
+    ocean = bpy.context.active_object
+    modifier = waves.wave_modifier(ocean)
+    for number in range(1, 5):
+        waves.set_wave_input(modifier, f"Amplitude {number}", 0.0)
+    scene.frame_set(17)
+    co, normal = _evaluated(ocean)
+    assert np.abs(co[:, 2]).max() == 0.0
+    assert np.allclose(normal, (0, 0, 1))
+
+
+def test_the_lake_combines_with_waves_and_the_panel_finds_their_inputs(scene, waves):
+    bpy.ops.object.water_surface_add(preset="lake", waves=True, resolution=65, size=40)
+    lake = bpy.context.active_object
+    modifier = waves.wave_modifier(lake)
+    assert modifier is not None
+    assert harness.addon("nodes.material").water_node(lake.active_material) is not None, "lake shading kept"
+    names = set(waves.input_ids(modifier))
+    assert {
+        f"{kind} {n}" for kind in ("Amplitude", "Wavelength", "Speed", "Direction") for n in range(1, 5)
+    } == names
+    defaults = harness.addon("nodes.wave_math").DEFAULT_WAVES
+    for number, wave in enumerate(defaults, 1):  # what the panel draws: every input, readable
+        owner, path = waves.input_property(modifier, f"Speed {number}")
+        assert owner.path_resolve(path) == pytest.approx(wave.speed)
+    probe = harness.addon("water.mirror").find_probe(lake)
+    assert probe.data.influence_distance >= waves.amplitude_sum(modifier), "the mirror reaches the crests"
+
+
+def test_resolution_is_clamped_to_what_a_machine_can_hold(addon):
+    plane = harness.addon("water.plane")
+    schema = harness.addon("presets.schema")
+    assert schema.clamp_values({"resolution": 10**9})["resolution"] == 2048
+    assert schema.clamp_values({"resolution": -5})["resolution"] == 2
+    assert 2 <= plane.max_resolution() <= 2048
+
+
+def test_the_add_operator_grid_has_the_asked_resolution_and_uvs(scene):
+    bpy.ops.object.water_surface_add(preset="ocean", size=10, resolution=5)
+    ocean = bpy.context.active_object
+    assert len(ocean.data.vertices) == 25 and len(ocean.data.polygons) == 16
+    assert all(p.normal.z > 0.99 for p in ocean.data.polygons)
+    uv = np.empty(len(ocean.data.loops) * 2)
+    ocean.data.uv_layers.active.data.foreach_get("uv", uv)
+    assert uv.min() == pytest.approx(0) and uv.max() == pytest.approx(1)
+
+
+def test_saved_ocean_animates_with_the_add_on_disabled(scene, wave_math, tmp_path):
+    bpy.ops.object.water_surface_add(preset="ocean", size=20, resolution=17)
+    rest = _rest(bpy.context.active_object)
+    path = tmp_path / "ocean.blend"
+    bpy.ops.wm.save_as_mainfile(filepath=str(path))
+    addon_utils.disable(harness.ADDON_MODULE, default_set=True)
+    try:
+        bpy.context.preferences.filepaths.use_scripts_auto_execute = False
+        bpy.ops.wm.open_mainfile(filepath=str(path), load_ui=False, use_scripts=False)
+        scene = bpy.context.scene
+        ocean = bpy.data.objects["Water"]
+        for frame in (5, 40):
+            scene.frame_set(frame)
+            co, _normal = _evaluated(ocean)
+            assert np.abs(co[:, 2] - wave_math.heights(rest[:, :2], _seconds(scene))).max() < 1e-4
+        node = bpy.data.materials["Water"].node_tree.nodes["Water Ocean Normal"]
+        assert node.inputs["Time"].default_value == pytest.approx(_seconds(scene)), "the bump clock runs too"
+    finally:
+        bpy.context.preferences.filepaths.use_scripts_auto_execute = True
+        addon_utils.enable(harness.ADDON_MODULE, default_set=True)
+
+
+def test_the_sky_comes_from_the_world_image_or_follows_the_world_colour(scene, tmp_path):
+    ocean_material = harness.addon("nodes.ocean_material")
+    harness.set_world_color(scene, (0.2, 0.3, 0.4))
+    material = ocean_material.make_ocean_material("Plain Sky", scene)
+    sky = material.node_tree.nodes["Sky"]
+    assert sky.type == "RGB"
+    scene.world.node_tree.nodes["Background"].inputs["Color"].default_value = (0.9, 0.5, 0.1, 1)
+    bpy.ops.mesh.primitive_plane_add()
+    bpy.context.active_object.data.materials.append(material)  # drivers run for used materials
+    scene.frame_set(2)
+    assert tuple(sky.outputs[0].default_value)[:3] == pytest.approx((0.9, 0.5, 0.1))
+
+    image = bpy.data.images.new("Sky HDR", 16, 8, float_buffer=True)
+    environment = scene.world.node_tree.nodes.new("ShaderNodeTexEnvironment")
+    environment.image = image
+    material = ocean_material.make_ocean_material("Image Sky", scene)
+    sky = material.node_tree.nodes["Sky"]
+    assert sky.type == "TEX_ENVIRONMENT" and sky.image == image
+    assert sky.inputs["Vector"].links[0].from_socket.name == "Reflection"

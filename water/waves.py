@@ -1,0 +1,69 @@
+"""The `Water Waves` modifier on a water object: add it, find it, read and set its inputs."""
+
+from ..nodes import SPECS, water_waves
+from ..nodes.builder import ensure_group
+
+MODIFIER = "Water Waves"
+
+
+def wave_modifier(obj):
+    """The object's Geometry Nodes modifier running `Water Waves`, or None."""
+    if obj is None or obj.type != "MESH":
+        return None
+    for modifier in obj.modifiers:
+        if modifier.type == "NODES" and modifier.node_group is not None:
+            if modifier.node_group.name.startswith(water_waves.NAME):
+                return modifier
+    return None
+
+
+def add_waves(obj):
+    """Adds (or reuses) the wave modifier on `obj`; returns it."""
+    modifier = wave_modifier(obj)
+    if modifier is None:
+        modifier = obj.modifiers.new(MODIFIER, "NODES")
+    modifier.node_group = ensure_group(SPECS[water_waves.NAME], SPECS)
+    return modifier
+
+
+def input_ids(modifier):
+    """Input name -> identifier of the modifier's group (the key of `modifier[...]`)."""
+    return {
+        item.name: item.identifier
+        for item in modifier.node_group.interface.items_tree
+        if item.item_type == "SOCKET" and item.in_out == "INPUT" and item.socket_type != "NodeSocketGeometry"
+    }
+
+
+def input_property(modifier, name):
+    """(owner, property path) of one modifier input, for `layout.prop` and for reading and writing.
+
+    Blender 5 keeps modifier inputs in `modifier.properties.inputs.<id>.value`;
+    4.2-4.5 keep them as ID properties, `modifier["<id>"]`.
+    """
+    identifier = input_ids(modifier)[name]
+    interface = getattr(modifier, "properties", None)
+    if interface is not None and hasattr(interface, "inputs"):
+        return getattr(interface.inputs, identifier), "value"
+    return modifier, f'["{identifier}"]'
+
+
+def set_wave_input(modifier, name, value):
+    """Sets one modifier input by name (e.g. "Amplitude 2") and refreshes the object."""
+    owner, path = input_property(modifier, name)
+    if path == "value":
+        owner.value = value
+    else:
+        modifier[path[2:-2]] = value
+    modifier.id_data.update_tag()
+
+
+def get_wave_input(modifier, name):
+    owner, path = input_property(modifier, name)
+    value = owner.value if path == "value" else modifier[path[2:-2]]
+    return tuple(value) if hasattr(value, "__len__") else value
+
+
+def amplitude_sum(modifier):
+    """The largest height the waves can reach above the rest level."""
+    return sum(abs(get_wave_input(modifier, f"Amplitude {i}")) for i in range(1, water_waves.WAVE_COUNT + 1))
