@@ -58,46 +58,50 @@ def wave_inputs(number, wave):
 
 
 def _wave_nodes(number):
-    """Nodes and links of one wave: its height h and its slope d * D."""
+    """Nodes and links of one wave: its height h and its slope d * D.
+
+    What does not vary over the mesh is worked out once per wave: the wave
+    vector k = D / lambda, A k and the phase t s. Per point that leaves
+    arg = dot(k, p) + t s, h = A sin(arg) and slope = cos(arg) A k.
+    """
     w = f"w{number}"
     column = 2
     nodes = {
         f"{w}_flat": vmath("MULTIPLY", column, f"D{number} in the plane", b=(1.0, 1.0, 0.0)),
         f"{w}_dir": vmath("NORMALIZE", column + 1, f"D{number}"),
         f"{w}_len": math("MAXIMUM", column + 1, f"lambda{number} (>= {MIN_WAVELENGTH})", b=MIN_WAVELENGTH),
-        f"{w}_dot": vmath("DOT_PRODUCT", column + 2, f"dot(D{number}, p)"),
-        f"{w}_phase": math("DIVIDE", column + 3, f"/ lambda{number}"),
+        f"{w}_inv": math("DIVIDE", column + 2, f"1 / lambda{number}", a=1.0),
+        f"{w}_k": vmath("SCALE", column + 3, f"k{number} = D / lambda"),
+        f"{w}_ak": vmath("SCALE", column + 4, f"A{number} k{number}"),
         f"{w}_time": math("MULTIPLY", column + 3, f"t * s{number}"),
-        f"{w}_arg": math("ADD", column + 4, f"arg{number}"),
-        f"{w}_sin": math("SINE", column + 5, f"sin arg{number}"),
-        f"{w}_cos": math("COSINE", column + 5, f"cos arg{number}"),
-        f"{w}_h": math("MULTIPLY", column + 6, f"h{number} = A sin"),
-        f"{w}_ac": math("MULTIPLY", column + 6, "A cos"),
-        f"{w}_d": math("DIVIDE", column + 7, f"d{number} = A cos / lambda"),
-        f"{w}_slope": vmath("SCALE", column + 8, f"d{number} * D{number}"),
+        f"{w}_dot": vmath("DOT_PRODUCT", column + 5, f"dot(k{number}, p)"),
+        f"{w}_arg": math("ADD", column + 6, f"arg{number}"),
+        f"{w}_sin": math("SINE", column + 7, f"sin arg{number}"),
+        f"{w}_cos": math("COSINE", column + 7, f"cos arg{number}"),
+        f"{w}_h": math("MULTIPLY", column + 8, f"h{number} = A sin"),
+        f"{w}_slope": vmath("SCALE", column + 8, f"d{number} D{number} = cos * A k"),
     }
     links = [
         (f"input:Direction {number}", f"{w}_flat:#0"),
         (f"{w}_flat:Vector", f"{w}_dir:#0"),
         (f"input:Wavelength {number}", f"{w}_len:#0"),
-        ("position:Position", f"{w}_dot:#0"),
-        (f"{w}_dir:Vector", f"{w}_dot:#1"),
-        (f"{w}_dot:Value", f"{w}_phase:#0"),
-        (f"{w}_len:Value", f"{w}_phase:#1"),
+        (f"{w}_len:Value", f"{w}_inv:#1"),
+        (f"{w}_dir:Vector", f"{w}_k:#0"),
+        (f"{w}_inv:Value", f"{w}_k:Scale"),
+        (f"{w}_k:Vector", f"{w}_ak:#0"),
+        (f"input:Amplitude {number}", f"{w}_ak:Scale"),
         ("time:Seconds", f"{w}_time:#0"),
         (f"input:Speed {number}", f"{w}_time:#1"),
-        (f"{w}_phase:Value", f"{w}_arg:#0"),
+        ("position:Position", f"{w}_dot:#0"),
+        (f"{w}_k:Vector", f"{w}_dot:#1"),
+        (f"{w}_dot:Value", f"{w}_arg:#0"),
         (f"{w}_time:Value", f"{w}_arg:#1"),
         (f"{w}_arg:Value", f"{w}_sin:#0"),
         (f"{w}_arg:Value", f"{w}_cos:#0"),
         (f"{w}_sin:Value", f"{w}_h:#0"),
         (f"input:Amplitude {number}", f"{w}_h:#1"),
-        (f"{w}_cos:Value", f"{w}_ac:#0"),
-        (f"input:Amplitude {number}", f"{w}_ac:#1"),
-        (f"{w}_ac:Value", f"{w}_d:#0"),
-        (f"{w}_len:Value", f"{w}_d:#1"),
-        (f"{w}_dir:Vector", f"{w}_slope:#0"),
-        (f"{w}_d:Value", f"{w}_slope:Scale"),
+        (f"{w}_ak:Vector", f"{w}_slope:#0"),
+        (f"{w}_cos:Value", f"{w}_slope:Scale"),
     ]
     return nodes, links
 
