@@ -140,7 +140,9 @@ def test_mirror_set_up_turns_tracing_on_adds_a_world_and_one_probe_that_follows_
     bpy.ops.object.water_surface_add(size=10, mirror_setup=False)
     water = bpy.context.active_object
     assert _probe(water) is None and scene.world is None
-    bpy.ops.object.water_mirror_setup()
+    changes = harness.addon("water.mirror").setup_mirror(scene, water)
+    assert "added planar probe 'Water Mirror'" in changes and "EEVEE ray tracing on" in changes
+    assert any(change.startswith("added world") for change in changes)
     bpy.ops.object.water_mirror_setup()  # again: reused, not duplicated
     probes = [o for o in bpy.data.objects if o.type == "LIGHT_PROBE"]
     assert len(probes) == 1 and probes[0].parent is water
@@ -162,6 +164,12 @@ def test_mirror_set_up_turns_tracing_on_adds_a_world_and_one_probe_that_follows_
     probe_corners = [probe.matrix_world @ Vector(c) for c in ((-1, -1, 0), (1, 1, 0))]
     for mine, theirs in zip(probe_corners, corners):
         assert (mine - theirs - normal * 0.01).length < 1e-4
+
+
+def test_add_mesh_menus_offer_the_operator(addon):
+    for menu in (bpy.types.VIEW3D_MT_mesh_add, bpy.types.VIEW3D_MT_add):
+        entries = [f.__module__ + "." + f.__qualname__ for f in menu._dyn_ui_initialize()]
+        assert any(entry.startswith(harness.ADDON_MODULE) for entry in entries), menu
 
 
 def test_panel_sections_name_real_group_inputs(addon):

@@ -39,7 +39,7 @@ def test_builtin_presets_hold_the_lake_calm_mirror_windy_river_and_murky_pond(st
     assert warnings == []
     ids = [p.id for p in presets]
     assert ids[0] == "lake", "the reference comes first"
-    assert {"lake", "calm_mirror", "windy_river", "murky_pond"} <= set(ids)
+    assert {"lake", "calm_mirror", "windy_river", "murky_pond", "ocean"} <= set(ids)
     lake = presets[0].values
     for key, value in REFERENCE.items():
         assert lake[key] == pytest.approx(value), key
@@ -79,6 +79,9 @@ def test_a_zero_wind_becomes_the_reference_direction(store, tmp_path):
         ({"values": [1, 2]}, "'values' must be an object"),
         ({"name": 3}, "'name' must be a non-empty string"),
         ('{"values": {"wave_height": NaN}}', "must be finite"),
+        ({"values": {"resolution": 2.5}}, "'resolution' must be a whole number"),
+        ({"values": {"waves": 1}}, "'waves' must be true or false"),
+        ({"values": {"shading": "lava"}}, "'shading' must be one of lake, ocean"),
     ],
 )
 def test_broken_or_ill_typed_files_are_skipped_with_a_warning_that_names_them(
