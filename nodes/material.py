@@ -36,11 +36,8 @@ def make_water_material(name="Water", scene=None, image=None, sun=None):
     water bump); `sun` a sun light object for the glint (default: the scene's first sun)."""
     scene = scene or bpy.context.scene
     group = water_group(image)
-    material = bpy.data.materials.new(name)
-    if bpy.app.version < (5, 0, 0):
-        material.use_nodes = True
+    material = new_node_material(name)
     tree = material.node_tree
-    tree.nodes.clear()
     water = tree.nodes.new("ShaderNodeGroup")
     water.node_tree, water.name, water.location, water.width = group, WATER_NODE, (-150, 0), 220
     zero = tree.nodes.new("ShaderNodeValue")
@@ -64,6 +61,15 @@ def make_water_material(name="Water", scene=None, image=None, sun=None):
     return material
 
 
+def new_node_material(name):
+    """A new material with an empty node tree (Blender 4.x needs `use_nodes` switched on)."""
+    material = bpy.data.materials.new(name)
+    if bpy.app.version < (5, 0, 0):
+        material.use_nodes = True
+    material.node_tree.nodes.clear()
+    return material
+
+
 def water_node(material):
     """The material's `Water Surface` group node, or None."""
     if material is None or material.node_tree is None:
@@ -84,7 +90,7 @@ def set_bump_image(material, image):
     water_node(material).node_tree = water_group(image)
 
 
-def _drive(socket, index, expression, variables):
+def drive_socket(socket, index, expression, variables):
     """A simple-expression driver on `socket.default_value[index]`.
 
     `variables` are (name, id_type, id, path) of single-property variables.
@@ -103,14 +109,19 @@ def _drive(socket, index, expression, variables):
     return driver
 
 
-def drive_time(material, scene):
-    """`Time` = seconds on `scene`'s clock: frame / (fps / fps_base)."""
-    _drive(
-        water_node(material).inputs["Time"],
+def drive_clock(socket, scene):
+    """`socket` = seconds on `scene`'s clock: frame / (fps / fps_base)."""
+    drive_socket(
+        socket,
         None,
         TIME_EXPRESSION,
         [("fps", "SCENE", scene, "render.fps"), ("fps_base", "SCENE", scene, "render.fps_base")],
     )
+
+
+def drive_time(material, scene):
+    """The water group's `Time` follows `scene`'s clock."""
+    drive_clock(water_node(material).inputs["Time"], scene)
 
 
 def first_sun(scene):
@@ -141,4 +152,4 @@ def drive_sun(material, sun):
         return
     for i in range(3):
         # RNA stores matrices by column: matrix_world[2] is the local Z axis in world space.
-        _drive(socket, i, "-z", [("z", "OBJECT", sun, f"matrix_world[2][{i}]")])
+        drive_socket(socket, i, "-z", [("z", "OBJECT", sun, f"matrix_world[2][{i}]")])

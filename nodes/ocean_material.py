@@ -12,7 +12,7 @@ import bpy
 from . import SPECS, ocean
 from .builder import ensure_group
 from .bump_image import ensure_bump_image
-from .material import TIME_EXPRESSION, _drive
+from .material import drive_clock, drive_socket, new_node_material
 
 OCEAN_NODE = "Water Ocean"
 NORMAL_NODE = "Water Ocean Normal"
@@ -49,7 +49,7 @@ def _sky_node(tree, world):
     node.outputs[0].default_value = tuple(colour.default_value)
     path = f'node_tree.nodes["{background.name}"].inputs[0].default_value'
     for i in range(3):
-        _drive(node.outputs[0], i, "c", [("c", "WORLD", world, f"{path}[{i}]")])
+        drive_socket(node.outputs[0], i, "c", [("c", "WORLD", world, f"{path}[{i}]")])
     return node, None
 
 
@@ -58,11 +58,8 @@ def make_ocean_material(name="Ocean", scene=None):
     scene = scene or bpy.context.scene
     normal_group = ensure_group(SPECS[ocean.NORMAL_NAME], SPECS, image=ensure_bump_image())
     shade_group = ensure_group(SPECS[ocean.SHADE_NAME], SPECS)
-    material = bpy.data.materials.new(name)
-    if bpy.app.version < (5, 0, 0):
-        material.use_nodes = True
+    material = new_node_material(name)
     tree = material.node_tree
-    tree.nodes.clear()
     normal = tree.nodes.new("ShaderNodeGroup")
     normal.node_tree, normal.name, normal.location, normal.width = normal_group, NORMAL_NODE, (-600, 0), 220
     sky, lookup = _sky_node(tree, scene.world)
@@ -76,12 +73,7 @@ def make_ocean_material(name="Ocean", scene=None):
         tree.links.new(normal.outputs["Reflection"], lookup)
     tree.links.new(sky.outputs[0], shade.inputs["Sky"])
     tree.links.new(shade.outputs["Shader"], output.inputs["Surface"])
-    _drive(
-        normal.inputs["Time"],
-        None,
-        TIME_EXPRESSION,
-        [("fps", "SCENE", scene, "render.fps"), ("fps_base", "SCENE", scene, "render.fps_base")],
-    )
+    drive_clock(normal.inputs["Time"], scene)
     return material
 
 

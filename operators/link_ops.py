@@ -1,8 +1,9 @@
-"""Choose the sun the glint follows and the normal map the water samples."""
+"""Choose the sun the glint follows and the normal map the water samples (lake shading)."""
 
 import bpy
 
-from ..nodes.material import drive_sun, set_bump_image
+from ..nodes.bump_image import IMAGE_NAME as BUMP_IMAGE_NAME
+from ..nodes.material import drive_sun, set_bump_image, water_node
 from ..water.values import water_material
 
 _items = {}  # kept alive for Blender's dynamic enums
@@ -17,63 +18,58 @@ def _sun_items(_self, context):
 
 
 def _image_items(_self, _context):
-    _items["image"] = [
-        ("DEFAULT", "Water Surface Bump", "The add-on's packed water normal map", "IMAGE", 0)
-    ] + [
+    _items["image"] = [("DEFAULT", BUMP_IMAGE_NAME, "The add-on's packed water normal map", "IMAGE", 0)] + [
         (image.name, image.name, f"Use '{image.name}' as the normal map", "IMAGE_DATA", i + 1)
         for i, image in enumerate(bpy.data.images)
-        if image.type not in {"RENDER_RESULT", "COMPOSITING"} and image.name != "Water Surface Bump"
+        if image.type not in {"RENDER_RESULT", "COMPOSITING"} and image.name != BUMP_IMAGE_NAME
     ]
     return _items["image"]
 
 
-class OBJECT_OT_water_surface_sun_set(bpy.types.Operator):
+class _LakeChoice:
+    """A searchable choice applied to the active object's lake material."""
+
+    bl_options = {"REGISTER", "UNDO"}
+
+    def invoke(self, context, _event):
+        context.window_manager.invoke_search_popup(self)
+        return {"RUNNING_MODAL"}
+
+    def execute(self, context):
+        material = water_material(context.active_object)
+        if water_node(material) is None:
+            what = "has ocean shading" if material is not None else "is not water"
+            self.report({"ERROR"}, f"The active object {what}: this choice is for lake water")
+            return {"CANCELLED"}
+        self.report({"INFO"}, self.choose(context, material))
+        return {"FINISHED"}
+
+
+class OBJECT_OT_water_surface_sun_set(_LakeChoice, bpy.types.Operator):
     """Choose the sun whose direction the water's glint follows"""
 
     bl_idname = "object.water_surface_sun_set"
     bl_label = "Glint Sun"
-    bl_options = {"REGISTER", "UNDO"}
     bl_property = "sun"
 
     sun: bpy.props.EnumProperty(name="Sun", items=_sun_items)
 
-    def invoke(self, context, _event):
-        context.window_manager.invoke_search_popup(self)
-        return {"RUNNING_MODAL"}
-
-    def execute(self, context):
-        material = water_material(context.active_object)
-        if material is None:
-            self.report({"ERROR"}, "The active object is not water (no Water Surface material)")
-            return {"CANCELLED"}
+    def choose(self, context, material):
         sun = None if self.sun == "NONE" else context.scene.objects.get(self.sun)
         drive_sun(material, sun)
-        self.report({"INFO"}, f"Glint follows {'the default light' if sun is None else repr(sun.name)}")
-        return {"FINISHED"}
+        return f"Glint follows {'the default light' if sun is None else repr(sun.name)}"
 
 
-class OBJECT_OT_water_surface_bump_set(bpy.types.Operator):
+class OBJECT_OT_water_surface_bump_set(_LakeChoice, bpy.types.Operator):
     """Choose the tangent-space normal map the water scrolls"""
 
     bl_idname = "object.water_surface_bump_set"
     bl_label = "Bump Image"
-    bl_options = {"REGISTER", "UNDO"}
     bl_property = "image"
 
     image: bpy.props.EnumProperty(name="Image", items=_image_items)
 
-    def invoke(self, context, _event):
-        context.window_manager.invoke_search_popup(self)
-        return {"RUNNING_MODAL"}
-
-    def execute(self, context):
-        material = water_material(context.active_object)
-        if material is None:
-            self.report({"ERROR"}, "The active object is not water (no Water Surface material)")
-            return {"CANCELLED"}
+    def choose(self, _context, material):
         image = None if self.image == "DEFAULT" else bpy.data.images.get(self.image)
         set_bump_image(material, image)
-        self.report(
-            {"INFO"}, f"'{material.name}' samples {'the default bump' if image is None else repr(image.name)}"
-        )
-        return {"FINISHED"}
+        return f"'{material.name}' samples {'the default bump' if image is None else repr(image.name)}"

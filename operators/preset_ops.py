@@ -3,13 +3,17 @@
 import bpy
 
 from .. import presets
+from ..nodes.material import water_node
 from ..water.values import read_values, water_material, write_values
 
 
 def _active_water(operator, context):
+    """The active object's lake material, or None after reporting why not."""
     material = water_material(context.active_object)
-    if material is None:
-        operator.report({"ERROR"}, "The active object is not water (no Water Surface material)")
+    if water_node(material) is None:
+        what = "has ocean shading (edit it in the panel)" if material is not None else "is not water"
+        operator.report({"ERROR"}, f"The active object {what}: presets hold lake water values")
+        return None
     return material
 
 
@@ -27,6 +31,9 @@ class OBJECT_OT_water_surface_preset_apply(bpy.types.Operator):
         if material is None:
             return {"CANCELLED"}
         preset = presets.get(self.preset)
+        if preset.values["shading"] != "lake":
+            self.report({"ERROR"}, f"'{preset.name}' builds its own mesh and shading: add it from Add > Mesh")
+            return {"CANCELLED"}
         write_values(material, preset.values)
         self.report({"INFO"}, f"Applied preset '{preset.name}' to '{material.name}'")
         return {"FINISHED"}
