@@ -240,3 +240,14 @@ def test_glint_sun_and_bump_image_are_chosen_by_operators(scene):
     assert material_module.bump_image(water.active_material) == image
     bpy.ops.object.water_surface_bump_set(image="DEFAULT")
     assert material_module.bump_image(water.active_material).name == "Water Surface Bump"
+
+
+def test_lake_only_choices_refuse_ocean_water_with_a_message(scene):
+    bpy.ops.object.water_surface_add(preset="ocean", resolution=3, size=10)
+    with pytest.raises(RuntimeError, match="ocean shading"):
+        bpy.ops.object.water_surface_sun_set(sun="NONE")
+    with pytest.raises(RuntimeError, match="ocean shading"):
+        bpy.ops.object.water_surface_preset_apply(preset="lake")
+    bpy.ops.object.water_surface_add(preset="lake", mirror_setup=False)
+    with pytest.raises(RuntimeError, match="builds its own mesh"):
+        bpy.ops.object.water_surface_preset_apply(preset="ocean")
