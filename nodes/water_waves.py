@@ -13,7 +13,7 @@ from .spec import GroupSpec, Node, Socket, math, vmath
 from .wave_math import DEFAULT_WAVES, MIN_WAVELENGTH
 
 NAME = "Water Waves"
-VERSION = 1
+VERSION = 2  # 2: scalar per-point maths (same results, faster)
 NORMAL_ATTRIBUTE = "water_normal"
 WAVE_COUNT = len(DEFAULT_WAVES)
 
@@ -57,29 +57,34 @@ def wave_inputs(number, wave):
     )
 
 
-def _wave_nodes(number):
-    """Nodes and links of one wave: its height h and its slope d * D.
+def _wave_nodes(number, height, slope_x, slope_y):
+    """Nodes and links of one wave, added onto the running sums `height`, `slope_x`, `slope_y`.
 
     What does not vary over the mesh is worked out once per wave: the wave
-    vector k = D / lambda, A k and the phase t s. Per point that leaves
-    arg = dot(k, p) + t s, h = A sin(arg) and slope = cos(arg) A k.
+    vector k = D / lambda, -A k and the phase t s. Per point that leaves five
+    scalar operations: arg = k.x p.x + k.y p.y + t s, h += A sin(arg) and
+    (-slope) += cos(arg) (-A k). Returns (nodes, links, new sums).
     """
     w = f"w{number}"
-    column = 2
     nodes = {
-        f"{w}_flat": vmath("MULTIPLY", column, f"D{number} in the plane", b=(1.0, 1.0, 0.0)),
-        f"{w}_dir": vmath("NORMALIZE", column + 1, f"D{number}"),
-        f"{w}_len": math("MAXIMUM", column + 1, f"lambda{number} (>= {MIN_WAVELENGTH})", b=MIN_WAVELENGTH),
-        f"{w}_inv": math("DIVIDE", column + 2, f"1 / lambda{number}", a=1.0),
-        f"{w}_k": vmath("SCALE", column + 3, f"k{number} = D / lambda"),
-        f"{w}_ak": vmath("SCALE", column + 4, f"A{number} k{number}"),
-        f"{w}_time": math("MULTIPLY", column + 3, f"t * s{number}"),
-        f"{w}_dot": vmath("DOT_PRODUCT", column + 5, f"dot(k{number}, p)"),
-        f"{w}_arg": math("ADD", column + 6, f"arg{number}"),
-        f"{w}_sin": math("SINE", column + 7, f"sin arg{number}"),
-        f"{w}_cos": math("COSINE", column + 7, f"cos arg{number}"),
-        f"{w}_h": math("MULTIPLY", column + 8, f"h{number} = A sin"),
-        f"{w}_slope": vmath("SCALE", column + 8, f"d{number} D{number} = cos * A k"),
+        f"{w}_flat": vmath("MULTIPLY", 2, f"D{number} in the plane", b=(1.0, 1.0, 0.0)),
+        f"{w}_dir": vmath("NORMALIZE", 3, f"D{number}"),
+        f"{w}_len": math("MAXIMUM", 3, f"lambda{number} (>= {MIN_WAVELENGTH})", b=MIN_WAVELENGTH),
+        f"{w}_inv": math("DIVIDE", 4, f"1 / lambda{number}", a=1.0),
+        f"{w}_k": vmath("SCALE", 5, f"k{number} = D / lambda"),
+        f"{w}_minus_a": math("MULTIPLY", 5, f"-A{number}", b=-1.0),
+        f"{w}_minus_ak": vmath("SCALE", 6, f"-A{number} k{number}"),
+        f"{w}_k_xy": Node("ShaderNodeSeparateXYZ", 7, label=f"k{number}"),
+        f"{w}_minus_ak_xy": Node("ShaderNodeSeparateXYZ", 7, label=f"-A{number} k{number}"),
+        f"{w}_phase": math("MULTIPLY", 7, f"phase{number} = t s"),
+        # Per point.
+        f"{w}_arg_y": math("MULTIPLY_ADD", 8, f"k.y p.y + phase{number}"),
+        f"{w}_arg": math("MULTIPLY_ADD", 9, f"arg{number} = k.x p.x + ..."),
+        f"{w}_sin": math("SINE", 10, f"sin arg{number}"),
+        f"{w}_cos": math("COSINE", 10, f"cos arg{number}"),
+        f"{w}_h": math("MULTIPLY_ADD", 11, f"h += A{number} sin", c=0.0),
+        f"{w}_nx": math("MULTIPLY_ADD", 11, "-slope.x += cos (-A k.x)", c=0.0),
+        f"{w}_ny": math("MULTIPLY_ADD", 11, "-slope.y += cos (-A k.y)", c=0.0),
     }
     links = [
         (f"input:Direction {number}", f"{w}_flat:#0"),
@@ -88,51 +93,51 @@ def _wave_nodes(number):
         (f"{w}_len:Value", f"{w}_inv:#1"),
         (f"{w}_dir:Vector", f"{w}_k:#0"),
         (f"{w}_inv:Value", f"{w}_k:Scale"),
-        (f"{w}_k:Vector", f"{w}_ak:#0"),
-        (f"input:Amplitude {number}", f"{w}_ak:Scale"),
-        ("time:Seconds", f"{w}_time:#0"),
-        (f"input:Speed {number}", f"{w}_time:#1"),
-        ("position:Position", f"{w}_dot:#0"),
-        (f"{w}_k:Vector", f"{w}_dot:#1"),
-        (f"{w}_dot:Value", f"{w}_arg:#0"),
-        (f"{w}_time:Value", f"{w}_arg:#1"),
+        (f"input:Amplitude {number}", f"{w}_minus_a:#0"),
+        (f"{w}_k:Vector", f"{w}_minus_ak:#0"),
+        (f"{w}_minus_a:Value", f"{w}_minus_ak:Scale"),
+        (f"{w}_k:Vector", f"{w}_k_xy:Vector"),
+        (f"{w}_minus_ak:Vector", f"{w}_minus_ak_xy:Vector"),
+        ("time:Seconds", f"{w}_phase:#0"),
+        (f"input:Speed {number}", f"{w}_phase:#1"),
+        (f"{w}_k_xy:Y", f"{w}_arg_y:#0"),
+        ("p:Y", f"{w}_arg_y:#1"),
+        (f"{w}_phase:Value", f"{w}_arg_y:#2"),
+        (f"{w}_k_xy:X", f"{w}_arg:#0"),
+        ("p:X", f"{w}_arg:#1"),
+        (f"{w}_arg_y:Value", f"{w}_arg:#2"),
         (f"{w}_arg:Value", f"{w}_sin:#0"),
         (f"{w}_arg:Value", f"{w}_cos:#0"),
         (f"{w}_sin:Value", f"{w}_h:#0"),
         (f"input:Amplitude {number}", f"{w}_h:#1"),
-        (f"{w}_ak:Vector", f"{w}_slope:#0"),
-        (f"{w}_cos:Value", f"{w}_slope:Scale"),
+        (f"{w}_cos:Value", f"{w}_nx:#0"),
+        (f"{w}_minus_ak_xy:X", f"{w}_nx:#1"),
+        (f"{w}_cos:Value", f"{w}_ny:#0"),
+        (f"{w}_minus_ak_xy:Y", f"{w}_ny:#1"),
     ]
-    return nodes, links
+    # The first wave adds onto the constants' zero; later ones onto the sums so far.
+    for key, running in ((f"{w}_h", height), (f"{w}_nx", slope_x), (f"{w}_ny", slope_y)):
+        if running is not None:
+            links.append((running, f"{key}:#2"))
+    return nodes, links, (f"{w}_h:Value", f"{w}_nx:Value", f"{w}_ny:Value")
 
 
 def _build():
     nodes = {
-        "position": Node("GeometryNodeInputPosition", 1, label="p"),
+        "position": Node("GeometryNodeInputPosition", 1, label="position"),
+        "p": Node("ShaderNodeSeparateXYZ", 2, label="p"),
         "time": Node("GeometryNodeInputSceneTime", 1, label="t (scene seconds)"),
     }
-    links = []
+    links = [("position:Position", "p:Vector")]
+    sums = (None, None, None)
     for number in range(1, WAVE_COUNT + 1):
-        wave_nodes, wave_links = _wave_nodes(number)
+        wave_nodes, wave_links, sums = _wave_nodes(number, *sums)
         nodes.update(wave_nodes)
         links += wave_links
-    # Sum the heights and the slopes, wave after wave.
-    height, slope = "w1_h:Value", "w1_slope:Vector"
-    for number in range(2, WAVE_COUNT + 1):
-        nodes[f"sum_h{number}"] = math("ADD", 11, f"h1 + .. + h{number}")
-        nodes[f"sum_s{number}"] = vmath("ADD", 11, f"slope 1 .. {number}")
-        links += [
-            (height, f"sum_h{number}:#0"),
-            (f"w{number}_h:Value", f"sum_h{number}:#1"),
-            (slope, f"sum_s{number}:#0"),
-            (f"w{number}_slope:Vector", f"sum_s{number}:#1"),
-        ]
-        height, slope = f"sum_h{number}:Value", f"sum_s{number}:Vector"
+    height, minus_slope_x, minus_slope_y = sums
     nodes.update(
         {
-            "normal_raw": vmath(
-                "MULTIPLY_ADD", 12, "(-dev.x, -dev.y, 1)", b=(-1.0, -1.0, 0.0), c=(0, 0, 1.0)
-            ),
+            "normal_raw": Node("ShaderNodeCombineXYZ", 12, values={"Z": 1.0}, label="(-dh/dx, -dh/dy, 1)"),
             "normal": vmath("NORMALIZE", 13, "analytic normal"),
             "store": Node(
                 "GeometryNodeStoreNamedAttribute",
@@ -146,7 +151,8 @@ def _build():
         }
     )
     links += [
-        (slope, "normal_raw:#0"),
+        (minus_slope_x, "normal_raw:X"),
+        (minus_slope_y, "normal_raw:Y"),
         ("normal_raw:Vector", "normal:#0"),
         ("input:Geometry", "store:Geometry"),
         ("normal:Vector", "store:Value"),
