@@ -6,7 +6,7 @@ from bpy_extras import object_utils
 from .. import presets
 from ..presets import schema
 from ..water import mirror
-from ..water.plane import dress_water, new_water_mesh
+from ..water.plane import dress_water, max_resolution, new_water_mesh
 from ._props import field_property
 
 KEYS = tuple(field.key for field in schema.FIELDS)
@@ -91,6 +91,11 @@ class OBJECT_OT_water_surface_add(object_utils.AddObjectHelper, bpy.types.Operat
             for key in KEYS
         }
         values = schema.clamp_values(values)
+        if values["resolution"] > max_resolution():
+            values["resolution"] = max_resolution()
+            self.report(
+                {"WARNING"}, f"Resolution lowered to {values['resolution']}: the free memory holds no more"
+            )
         for key, value in values.items():
             setattr(self, key, value)
         self.ran = True
