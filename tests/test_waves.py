@@ -173,3 +173,12 @@ def test_the_sky_comes_from_the_world_image_or_follows_the_world_colour(scene, t
     sky = material.node_tree.nodes["Sky"]
     assert sky.type == "TEX_ENVIRONMENT" and sky.image == image
     assert sky.inputs["Vector"].links[0].from_socket.name == "Reflection"
+
+
+def test_panel_ocean_inputs_name_real_group_inputs(scene):
+    bpy.ops.object.water_surface_add(preset="ocean", resolution=3, size=10)
+    material = bpy.context.active_object.active_material
+    normal, shade = harness.addon("nodes.ocean_material").ocean_nodes(material)
+    nodes = {"normal": normal, "shade": shade}
+    for which, name in harness.addon("ui.panel")._OCEAN_INPUTS:
+        assert name in nodes[which].inputs

@@ -14,6 +14,14 @@ from ..water.mirror import find_probe
 from ..water.values import water_material
 from ..water.waves import input_property, wave_modifier
 
+# The ocean shading's inputs the panel shows: (which group node, input name).
+_OCEAN_INPUTS = (
+    ("normal", "Bump Strength"),
+    ("normal", "Tex Stretch"),
+    ("shade", "Deep Color"),
+    ("shade", "Glint Power"),
+)
+
 _SECTIONS = (
     ("Waves", "MOD_WAVE", ("Wave Height", "Wave Length", "Bump Strength")),
     ("Wind", "FORCE_WIND", ("Wind Direction", "Wind Force")),
@@ -113,13 +121,9 @@ class VIEW3D_PT_water_surface(bpy.types.Panel):
         box = layout.box()
         box.label(text="Ocean", icon="MOD_OCEAN")
         box.use_property_split = True
-        for node, name in (
-            (normal, "Bump Strength"),
-            (normal, "Tex Stretch"),
-            (shade, "Deep Color"),
-            (shade, "Glint Power"),
-        ):
-            box.prop(node.inputs[name], "default_value", text=name)
+        nodes = {"normal": normal, "shade": shade}
+        for which, name in _OCEAN_INPUTS:
+            box.prop(nodes[which].inputs[name], "default_value", text=name)
 
     def draw_waves(self, layout, obj):
         """The wave modifier's inputs, wave by wave, or a button to add it."""
