@@ -10,6 +10,15 @@ from .spec import GroupSpec, Node, Socket, group_node, math, vmath
 
 NAME = "Water Surface Bump UV"
 
+# The clock input of every shader group that moves (the ocean's too).
+TIME_INPUT = Socket(
+    "Time",
+    "NodeSocketFloat",
+    0.0,
+    subtype="TIME_ABSOLUTE",
+    tooltip="Seconds; the material drives it from the scene clock",
+)
+
 # Shared with the `Water Surface` group, whose inputs they also are.
 SCROLL_INPUTS = (
     Socket(
@@ -36,13 +45,7 @@ SCROLL_INPUTS = (
         max=10.0,
         tooltip="Scroll speed in UV units per second, before tiling",
     ),
-    Socket(
-        "Time",
-        "NodeSocketFloat",
-        0.0,
-        subtype="TIME_ABSOLUTE",
-        tooltip="Seconds; the material drives it from the scene clock",
-    ),
+    TIME_INPUT,
 )
 
 SPEC = GroupSpec(

@@ -10,6 +10,7 @@ unlit, as the seeds draw it. Two groups, because a shader group cannot hold the
 world's image: the lookup sits between them in the material.
 """
 
+from .bump_uv import TIME_INPUT
 from .spec import BUMP_IMAGE, GroupSpec, Node, Socket, math, vmath
 from .water_waves import NORMAL_ATTRIBUTE
 
@@ -43,13 +44,7 @@ NORMAL_SPEC = GroupSpec(
             max=1000.0,
             tooltip="Bump taps per UV unit (the seeds' 4)",
         ),
-        Socket(
-            "Time",
-            "NodeSocketFloat",
-            0.0,
-            subtype="TIME_ABSOLUTE",
-            tooltip="Seconds; the material drives it from the scene clock",
-        ),
+        TIME_INPUT,
     ),
     outputs=(
         Socket("Normal", "NodeSocketVector", tooltip="Shading normal n, world space"),

@@ -152,30 +152,26 @@ def check_values(values):
     return clean, unknown
 
 
+def _in_range(number, field, default):
+    """`number` clamped into the field's range; NaN becomes `default`, infinities a bound."""
+    number = float(number)
+    return default if math.isnan(number) else min(max(number, field.min), field.max)
+
+
 def clamp_values(values):
     """Values from a caller (operator, command line) made safe: out of range or
     non-finite numbers fall back into range, a zero wind becomes +Y.
 
-    Unlike `check_values` this never refuses: NaN and infinities become the
-    nearest bound or the default.
+    Unlike `check_values` this never refuses a number: NaN becomes the default
+    and an infinity the nearest bound.
     """
     safe = {}
     for key, value in values.items():
         field = BY_KEY[key]
-        if field.kind in ("bool", "choice"):
-            safe[key] = check_value(field, value)
-            continue
-        if field.kind == "int":
-            number = float(value)
-            number = field.default if math.isnan(number) else min(max(number, field.min), field.max)
-            safe[key] = int(round(number))
-            continue
-        items = (value,) if field.kind == "float" else tuple(value)
-        fixed = []
-        for number, default in zip(items, (field.default,) if field.kind == "float" else field.default):
-            number = float(number)
-            if math.isnan(number):
-                number = default
-            fixed.append(min(max(number, field.min), field.max))
-        safe[key] = check_value(field, fixed[0] if field.kind == "float" else fixed)
+        if field.kind in ("float", "int"):
+            value = _in_range(value, field, field.default)
+            value = round(value) if field.kind == "int" else value
+        elif field.kind in ("vec2", "color"):
+            value = [_in_range(v, field, default) for v, default in zip(value, field.default)]
+        safe[key] = check_value(field, value)
     return safe

@@ -8,20 +8,11 @@ import addon_utils
 import bpy
 import pytest
 from mathutils import Vector
+from test_presets import REFERENCE as LAKE
 
 import harness
 
-REFERENCE = {
-    "size": 128.0,
-    "wave_height": 0.3,
-    "wave_length": 0.1,
-    "wind_direction": (0.0, 1.0),
-    "wind_force": 0.02,
-    "dull_color": (0.3, 0.3, 0.5),
-    "dull_blend": 0.2,
-    "specular_power": 256.0,
-    "mirror_setup": True,
-}
+REFERENCE = {**LAKE, "mirror_setup": True}
 
 
 def _values(obj):

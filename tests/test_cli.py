@@ -44,13 +44,22 @@ def test_add_writes_a_new_file_with_water_and_prints_what_it_did(cli, saved, tmp
 
 def test_render_writes_the_image_of_one_frame(cli, saved, tmp_path, capsys):
     with_water = tmp_path / "with_water.blend"
-    assert cli.main(["add", str(saved), str(with_water), "--size", "20", "--no-mirror"]) == 0
+    # A fully dull red water: unmistakable against the blue sky.
+    options = ["--size", "20", "--no-mirror", "--dull-blend", "1", "--dull-color", "1", "0", "0"]
+    assert cli.main(["add", str(saved), str(with_water), *options]) == 0
     image = tmp_path / "frame.png"
     status = cli.main(["render", str(with_water), str(image), "--frame", "12", "--samples", "1"])
     assert status == 0 and "frame 12" in capsys.readouterr().out
     pixels = harness.load_image(image)
     assert pixels.shape[:2] == (72, 128)
-    assert np.isfinite(pixels).all() and pixels[..., :3].mean() > 0.1
+    assert np.isfinite(pixels).all()
+    # The same shot without the water shows only the sky; with it, the water covers the middle.
+    sky = tmp_path / "sky.png"
+    assert cli.main(["render", str(saved), str(sky), "--samples", "1"]) == 0
+    without = harness.load_image(sky)
+    assert np.allclose(without[..., :3], without[0, 0, :3], atol=0.01), "nothing but the sky"
+    red, green, blue = (pixels[24:48, 40:88, i] for i in range(3))
+    assert ((red > 0.9) & (green < 0.1) & (blue < 0.1)).mean() > 0.9, "the red water covers the middle"
 
 
 @pytest.mark.parametrize(

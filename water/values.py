@@ -36,18 +36,21 @@ def read_values(material):
 
 
 def write_values(material, values):
-    """Sets the shader values in `values` (preset keys; `size` is ignored), clamped first."""
+    """Sets the shader values among `values` (preset keys), clamped first.
+
+    The plane's keys are ignored, and so is an ocean material: its values live in its own groups.
+    """
     node = water_node(material)
-    if node is None:  # ocean shading: its values live in its own groups
-        return {}
+    if node is None:
+        return
     shader_keys = {field.key for field in schema.SHADER_FIELDS}
     safe = schema.clamp_values({k: v for k, v in values.items() if k in shader_keys})
     for key, value in safe.items():
-        socket = node.inputs[schema.BY_KEY[key].socket]
-        if schema.BY_KEY[key].kind == "vec2":
+        field = schema.BY_KEY[key]
+        socket = node.inputs[field.socket]
+        if field.kind == "vec2":
             socket.default_value = (value[0], value[1], 0.0)
-        elif schema.BY_KEY[key].kind == "color":
+        elif field.kind == "color":
             socket.default_value = (*value, 1.0)
         else:
             socket.default_value = value
-    return safe
