@@ -12,6 +12,7 @@ it follows it when moved, rotated or scaled.
 import bpy
 
 from ..engine import eevee_engine_id, enable_ray_tracing
+from ..nodes.material import water_node
 from .values import water_material
 from .waves import amplitude_sum, wave_modifier
 
@@ -81,7 +82,7 @@ def setup_mirror(scene, water):
         scene.render.engine = eevee_engine_id()
         changes.append("render engine set to EEVEE")
     changes += [_SETTING_NAMES[name] for name in enable_ray_tracing(scene)]
-    if not material.use_raytrace_refraction and material.node_tree.nodes.get("Water Surface"):
+    if water_node(material) is not None and not material.use_raytrace_refraction:
         material.use_raytrace_refraction = True
         changes.append(f"ray-traced refraction on for '{material.name}'")
     if scene.world is None:

@@ -54,13 +54,14 @@ def set_wave_input(modifier, name, value):
     if path == "value":
         owner.value = value
     else:
-        modifier[path[2:-2]] = value
+        owner[input_ids(modifier)[name]] = value
     modifier.id_data.update_tag()
 
 
 def get_wave_input(modifier, name):
+    """One modifier input's value by name; vectors as tuples."""
     owner, path = input_property(modifier, name)
-    value = owner.value if path == "value" else modifier[path[2:-2]]
+    value = owner.path_resolve(path)
     return tuple(value) if hasattr(value, "__len__") else value
 
 
