@@ -2,7 +2,9 @@
 
 `uv' = (dot(uv, p), dot(uv, w))`, then `uv'.y += Time * Wind Force`, then
 `uv' /= Wave Length`. Nested in the `Water Surface` group, which samples its
-bump map there.
+bump map there. `Scroll` is the scroll alone in the same tiled units,
+`(0, Time * Wind Force / Wave Length)`, so that the extra bump layers (seed 001:
+finer tilings that scroll at other speeds) can be made from these two outputs.
 """
 
 from . import wind_frame
@@ -50,10 +52,13 @@ SCROLL_INPUTS = (
 
 SPEC = GroupSpec(
     name=NAME,
-    version=1,
+    version=2,
     description="Scrolling, wind-aligned, tiled UV for the water bump map",
     inputs=SCROLL_INPUTS,
-    outputs=(Socket("Vector", "NodeSocketVector", tooltip="UV at which to sample the bump map"),),
+    outputs=(
+        Socket("Vector", "NodeSocketVector", tooltip="UV at which to sample the bump map"),
+        Socket("Scroll", "NodeSocketVector", tooltip="The scroll alone, in the same tiled units"),
+    ),
     nodes={
         "coords": Node("ShaderNodeTexCoord", 1),
         "frame": group_node(wind_frame.NAME, 1),
@@ -64,6 +69,8 @@ SPEC = GroupSpec(
         "uv_wind": Node("ShaderNodeCombineXYZ", 4, label="wind-frame UV"),
         "tiled": vmath("DIVIDE", 5, "/ Wave Length"),
         "length_xyz": Node("ShaderNodeCombineXYZ", 4, label="(L, L, 1)", values={"Z": 1.0}),
+        "scroll_xyz": Node("ShaderNodeCombineXYZ", 4, label="(0, scroll, 0)"),
+        "scroll_tiled": vmath("DIVIDE", 5, "scroll / Wave Length"),
     },
     links=(
         ("input:Wind Direction", "frame:Wind Direction"),
@@ -82,5 +89,9 @@ SPEC = GroupSpec(
         ("uv_wind:Vector", "tiled:#0"),
         ("length_xyz:Vector", "tiled:#1"),
         ("tiled:Vector", "output:Vector"),
+        ("scroll:Value", "scroll_xyz:Y"),
+        ("scroll_xyz:Vector", "scroll_tiled:#0"),
+        ("length_xyz:Vector", "scroll_tiled:#1"),
+        ("scroll_tiled:Vector", "output:Scroll"),
     ),
 )

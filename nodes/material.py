@@ -140,16 +140,20 @@ def glint_sun(material):
 
 
 def drive_sun(material, sun):
-    """`Sun Direction` follows `sun`'s -Z axis (the way its light travels).
+    """`Sun Direction` follows `sun`'s -Z axis (the way its light travels), `Sun Color` its colour.
 
-    With `sun` None it is the reference's default light.
+    With `sun` None they are the reference's default light, white.
     """
-    socket = water_node(material).inputs["Sun Direction"]
+    node = water_node(material)
+    direction, color = node.inputs["Sun Direction"], node.inputs["Sun Color"]
     for i in range(3):
-        socket.driver_remove("default_value", i)
+        direction.driver_remove("default_value", i)
+        color.driver_remove("default_value", i)
     if sun is None:
-        socket.default_value = water_surface.DEFAULT_SUN
+        direction.default_value = water_surface.DEFAULT_SUN
+        color.default_value = (1.0, 1.0, 1.0, 1.0)
         return
     for i in range(3):
         # RNA stores matrices by column: matrix_world[2] is the local Z axis in world space.
-        drive_socket(socket, i, "-z", [("z", "OBJECT", sun, f"matrix_world[2][{i}]")])
+        drive_socket(direction, i, "-z", [("z", "OBJECT", sun, f"matrix_world[2][{i}]")])
+        drive_socket(color, i, "c", [("c", "OBJECT", sun, f"data.color[{i}]")])

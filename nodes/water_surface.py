@@ -3,7 +3,10 @@
 Per pixel (Blender is Z-up; `eye` is Geometry > Incoming, pointing at the camera):
 
 * the bump map is sampled (mirror extension) at the scrolling, wind-aligned UV
-  of `Water Surface Bump UV`, decoded to a tangent-space normal
+  of `Water Surface Bump UV`; with **Bump Layers** N > 1 also at seed 001's finer
+  layers (UV scale x2, x4, x8, scrolling at x2, x1, x0.5 the first layer's
+  speed: seed 001's x2, x4, x2, x1 of a base speed of Wind Force / 2), the
+  first N samples averaged; the mean is decoded to a tangent-space normal
   `t = 2 * bump - 1` whose X/Y lie in the wind frame, and rotated back into UV space;
 * **Wave Height** scales the normal's tilt for the reflection and refraction
   closures. The seeds shift their screen-space lookups by
@@ -14,21 +17,26 @@ Per pixel (Blender is Z-up; `eye` is Geometry > Incoming, pointing at the camera
 * **Bump Strength** does the same for the normal `n` used by Fresnel and glint;
 * `F = clamp(dot(eye, n), 0, 1)`, and the surface is
   `(1 - Dull Blend) * ((1 - F) * reflection + F * refraction) + Dull Blend * Dull Color`
-  (dull colour unlit, as in the seeds) plus the white glint
-  `Specular Strength * pow(max(dot(reflect(L, n), eye), 0), Specular Power)`.
+  (dull colour unlit, as in the seeds) plus the glint
+  `Sun Color * Specular Strength * pow(max(dot(reflect(L, n), eye), 0), Specular Power)`
+  (seed 003: a coloured light multiplies its highlight).
 
 Reflection is a sharp Glossy BSDF and refraction a Refraction BSDF (IOR 1.33):
 EEVEE's ray tracing supplies what the seeds' reflection and refraction maps
 held, and Cycles traces them. Neither closure adds a Fresnel of its own, so the
-Mix Shaders are the seeds' lerps exactly (with the Material Output's Thickness
-at 0: see `material.py`).
+seeds' two lerps are closure weights: the glossy's colour is
+`(1 - Dull Blend) * (1 - F)`, the refraction's `(1 - Dull Blend) * F` (exact with
+the Material Output's Thickness at 0: see `material.py`), and one emission
+carries the dull colour and the glint. The debug views only change these three
+weights, so they cost no extra closures.
 """
 
 from . import bump_uv, wind_frame
 from .spec import BUMP_IMAGE, GroupSpec, Node, Socket, group_node, math, vmath
 
 NAME = "Water Surface"
-VERSION = 1
+VERSION = 2
+MAX_BUMP_LAYERS = 4
 
 DEBUG_VIEWS = (
     (0, "FINAL", "Final", "The finished water"),
@@ -36,7 +44,7 @@ DEBUG_VIEWS = (
     (2, "REFRACTION", "Refraction", "The refraction closure alone"),
     (3, "FRESNEL", "Fresnel", "F as unlit grey"),
     (4, "NORMAL", "Bump Normal", "The bump normal n * 0.5 + 0.5, unlit"),
-    (5, "GLINT", "Glint", "The sun glint alone, unlit grey"),
+    (5, "GLINT", "Glint", "The sun glint alone, unlit, in the sun's colour"),
 )
 
 # The reference's default light, (-1, -1, -1) in XNA's Y-up world, is (-1, 1, -1) in Blender.
@@ -52,6 +60,14 @@ INPUTS = (
         tooltip="How far the bump tilts the reflection and refraction (0 = flat mirror)",
     ),
     *bump_uv.SCROLL_INPUTS,
+    Socket(
+        "Bump Layers",
+        "NodeSocketInt",
+        1,
+        min=1,
+        max=MAX_BUMP_LAYERS,
+        tooltip="How many bump layers are averaged (seed 001): each finer, scrolling at its own speed",
+    ),
     Socket(
         "Dull Color",
         "NodeSocketColor",
@@ -91,6 +107,12 @@ INPUTS = (
         tooltip="Direction sunlight travels; the material drives it from the scene's sun",
     ),
     Socket(
+        "Sun Color",
+        "NodeSocketColor",
+        (1.0, 1.0, 1.0, 1.0),
+        tooltip="Colour of the glint; the material drives it from the followed sun's colour",
+    ),
+    Socket(
         "Bump Strength",
         "NodeSocketFloat",
         1.0,
@@ -109,31 +131,116 @@ INPUTS = (
 )
 
 
-def _debug_nodes():
-    """Mix Shaders that swap the output for one debug view when `Debug View` equals its number."""
-    views = {
-        1: "glossy:BSDF",
-        2: "refraction:BSDF",
-        3: "view_f:Emission",
-        4: "view_n:Emission",
-        5: "view_glint:Emission",
-    }
-    nodes, links, previous = {}, [], "final:Shader"
-    for number, source in views.items():
-        nodes[f"is_{number}"] = math("COMPARE", 18 + number, f"view == {number}", b=float(number), c=0.5)
-        nodes[f"show_{number}"] = Node("ShaderNodeMixShader", 19 + number, label=f"debug view {number}")
+# Seed 001's layers after the first: (UV scale, scroll speed), both relative to layer 1.
+LAYERS = ((2.0, 2.0), (4.0, 1.0), (8.0, 0.5))
+
+
+def _layer_nodes():
+    """Layers 2-4, sampled at `scale * uv1 + (speed - scale) * scroll`, each counted once reached.
+
+    Returns the nodes, the links, and the sockets of the weighted sum and of the layer count.
+    """
+    nodes, links = {}, []
+    total, count = "bump:Color", None
+    for k, (scale, speed) in enumerate(LAYERS, start=2):
+        nodes |= {
+            f"scroll_{k}": vmath("SCALE", 2, f"scroll x {speed - scale:g}", scale=speed - scale),
+            f"uv_{k}": vmath("MULTIPLY_ADD", 3, f"layer {k}: uv x {scale:g} + scroll", b=(scale,) * 3),
+            f"bump_{k}": Node(
+                "ShaderNodeTexImage",
+                4,
+                {"extension": "MIRROR", "image": BUMP_IMAGE},
+                label=f"bump layer {k}",
+            ),
+            f"on_{k}": math("GREATER_THAN", 4, f"Bump Layers >= {k}", b=k - 0.5),
+            f"sum_{k}": vmath("MULTIPLY_ADD", 5, f"+ layer {k} if on"),
+            f"count_{k}": math("ADD", 5, "layers averaged", a=1.0) if count is None else math("ADD", 5, "+1"),
+        }
         links += [
-            ("input:Debug View", f"is_{number}:#0"),
-            (f"is_{number}:Value", f"show_{number}:Fac"),
-            (previous, f"show_{number}:#1"),
-            (source, f"show_{number}:#2"),
+            ("bump_uv:Scroll", f"scroll_{k}:#0"),
+            ("bump_uv:Vector", f"uv_{k}:#0"),
+            (f"scroll_{k}:Vector", f"uv_{k}:#2"),
+            (f"uv_{k}:Vector", f"bump_{k}:Vector"),
+            ("input:Bump Layers", f"on_{k}:#0"),
+            (f"bump_{k}:Color", f"sum_{k}:#0"),
+            (f"on_{k}:Value", f"sum_{k}:#1"),
+            (total, f"sum_{k}:#2"),
+            (f"on_{k}:Value", f"count_{k}:#1"),
         ]
-        previous = f"show_{number}:Shader"
-    links.append((previous, "output:Shader"))
+        if count is not None:
+            links.append((count, f"count_{k}:#0"))
+        total, count = f"sum_{k}:Vector", f"count_{k}:Value"
+    nodes["mean"] = vmath("DIVIDE", 6, "mean of the layers")
+    links += [(total, "mean:#0"), (count, "mean:#1")]
     return nodes, links
 
 
-_DEBUG_NODES, _DEBUG_LINKS = _debug_nodes()
+def _weight_nodes():
+    """The closure weights and the emission colour for the final picture and each debug view.
+
+    Final: glossy `(1 - Dull Blend) (1 - F)`, refraction `(1 - Dull Blend) F`,
+    emission `Dull Blend * Dull Color + glint`. View 1 or 2: that closure at
+    weight 1 alone. Views 3-5: only the emission, showing F, the normal colour
+    or the glint. Any other number shows the final picture.
+    """
+    nodes, links = {}, []
+    previous = None
+    for number in range(1, 6):
+        nodes[f"is_{number}"] = math("COMPARE", 17, f"view == {number}", b=float(number), c=0.5)
+        links.append(("input:Debug View", f"is_{number}:#0"))
+        if previous is not None:
+            nodes[f"any_{number}"] = math("ADD", 18, "a debug view")
+            links += [(previous, f"any_{number}:#0"), (f"is_{number}:Value", f"any_{number}:#1")]
+            previous = f"any_{number}:Value"
+        else:
+            previous = "is_1:Value"
+    nodes |= {
+        "is_final": math("SUBTRACT", 19, "final view", a=1.0),
+        "clear": math("SUBTRACT", 19, "1 - Dull Blend", a=1.0),
+        "keep": math("MULTIPLY", 20, "final x (1 - Dull Blend)"),
+        "one_minus_f": math("SUBTRACT", 20, "1 - F", a=1.0),
+        "w_reflect": math("MULTIPLY_ADD", 21, "reflection weight"),
+        "w_refract": math("MULTIPLY_ADD", 21, "refraction weight"),
+        "dull_part": vmath("SCALE", 19, "Dull Blend x Dull Color"),
+        "lit": vmath("ADD", 20, "+ glint"),
+        "e_final": vmath("SCALE", 21, "if final"),
+        "e_f": vmath("MULTIPLY_ADD", 22, "+ F if view 3"),
+        "e_n": vmath("MULTIPLY_ADD", 22, "+ normal if view 4"),
+        "e_glint": vmath("MULTIPLY_ADD", 22, "+ glint if view 5"),
+    }
+    links += [
+        (previous, "is_final:#1"),
+        ("input:Dull Blend", "clear:#1"),
+        ("is_final:Value", "keep:#0"),
+        ("clear:Value", "keep:#1"),
+        ("fresnel:Value", "one_minus_f:#1"),
+        ("keep:Value", "w_reflect:#0"),
+        ("one_minus_f:Value", "w_reflect:#1"),
+        ("is_1:Value", "w_reflect:#2"),
+        ("keep:Value", "w_refract:#0"),
+        ("fresnel:Value", "w_refract:#1"),
+        ("is_2:Value", "w_refract:#2"),
+        ("input:Dull Color", "dull_part:#0"),
+        ("input:Dull Blend", "dull_part:Scale"),
+        ("dull_part:Vector", "lit:#0"),
+        ("glint_color:Vector", "lit:#1"),
+        ("lit:Vector", "e_final:#0"),
+        ("is_final:Value", "e_final:Scale"),
+        ("fresnel:Value", "e_f:#0"),
+        ("is_3:Value", "e_f:#1"),
+        ("e_final:Vector", "e_f:#2"),
+        ("normal_colour:Vector", "e_n:#0"),
+        ("is_4:Value", "e_n:#1"),
+        ("e_f:Vector", "e_n:#2"),
+        ("glint_color:Vector", "e_glint:#0"),
+        ("is_5:Value", "e_glint:#1"),
+        ("e_n:Vector", "e_glint:#2"),
+    ]
+    return nodes, links
+
+
+_LAYER_NODES, _LAYER_LINKS = _layer_nodes()
+_WEIGHT_NODES, _WEIGHT_LINKS = _weight_nodes()
 
 SPEC = GroupSpec(
     name=NAME,
@@ -142,71 +249,67 @@ SPEC = GroupSpec(
     inputs=INPUTS,
     outputs=(Socket("Shader", "NodeSocketShader"),),
     nodes={
-        # Sample the bump at the scrolled UV, decode it, rotate it from the wind frame back into UV space.
+        # Sample the bump layers at the scrolled UVs, average, decode, rotate out of the wind frame.
         "bump_uv": group_node(bump_uv.NAME, 1),
         "bump": Node(
             "ShaderNodeTexImage",
-            2,
+            4,
             {"extension": "MIRROR", "image": BUMP_IMAGE},
-            label="bump map (mirror)",
+            label="bump layer 1 (mirror)",
         ),
-        "frame": group_node(wind_frame.NAME, 2),
-        "decode": vmath("MULTIPLY_ADD", 3, "t = 2 * bump - 1", b=(2.0, 2.0, 2.0), c=(-1.0, -1.0, -1.0)),
-        "t": Node("ShaderNodeSeparateXYZ", 4, label="t"),
-        "w": Node("ShaderNodeSeparateXYZ", 4, label="w"),
-        "tx_wy": math("MULTIPLY", 5, "t.x * w.y"),
-        "ty_wy": math("MULTIPLY", 5, "t.y * w.y"),
-        "minus_wx": math("MULTIPLY", 5, "-w.x", b=-1.0),
-        "uv_x": math("MULTIPLY_ADD", 6, "t.x p.x + t.y w.x"),
-        "uv_y": math("MULTIPLY_ADD", 6, "t.x p.y + t.y w.y"),
+        **_LAYER_NODES,
+        "frame": group_node(wind_frame.NAME, 6),
+        "decode": vmath("MULTIPLY_ADD", 7, "t = 2 * bump - 1", b=(2.0, 2.0, 2.0), c=(-1.0, -1.0, -1.0)),
+        "t": Node("ShaderNodeSeparateXYZ", 8, label="t"),
+        "w": Node("ShaderNodeSeparateXYZ", 8, label="w"),
+        "tx_wy": math("MULTIPLY", 9, "t.x * w.y"),
+        "ty_wy": math("MULTIPLY", 9, "t.y * w.y"),
+        "minus_wx": math("MULTIPLY", 9, "-w.x", b=-1.0),
+        "uv_x": math("MULTIPLY_ADD", 10, "t.x p.x + t.y w.x"),
+        "uv_y": math("MULTIPLY_ADD", 10, "t.x p.y + t.y w.y"),
         # Tilt by Wave Height (closures) and by Bump Strength (Fresnel, glint).
-        "h_x": math("MULTIPLY", 7, "x * Wave Height"),
-        "h_y": math("MULTIPLY", 7, "y * Wave Height"),
-        "s_x": math("MULTIPLY", 7, "x * Bump Strength"),
-        "s_y": math("MULTIPLY", 7, "y * Bump Strength"),
-        "tilt_h": Node("ShaderNodeCombineXYZ", 8, label="closure tilt"),
-        "tilt_s": Node("ShaderNodeCombineXYZ", 8, label="bump tilt"),
-        "encode_h": vmath("MULTIPLY_ADD", 9, "to colour", b=(0.5, 0.5, 0.5), c=(0.5, 0.5, 0.5)),
-        "encode_s": vmath("MULTIPLY_ADD", 9, "to colour", b=(0.5, 0.5, 0.5), c=(0.5, 0.5, 0.5)),
-        "normal_h": Node("ShaderNodeNormalMap", 10, label="closure normal"),
-        "normal_s": Node("ShaderNodeNormalMap", 10, label="n"),
+        "h_x": math("MULTIPLY", 11, "x * Wave Height"),
+        "h_y": math("MULTIPLY", 11, "y * Wave Height"),
+        "s_x": math("MULTIPLY", 11, "x * Bump Strength"),
+        "s_y": math("MULTIPLY", 11, "y * Bump Strength"),
+        "tilt_h": Node("ShaderNodeCombineXYZ", 12, label="closure tilt"),
+        "tilt_s": Node("ShaderNodeCombineXYZ", 12, label="bump tilt"),
+        "encode_h": vmath("MULTIPLY_ADD", 13, "to colour", b=(0.5, 0.5, 0.5), c=(0.5, 0.5, 0.5)),
+        "encode_s": vmath("MULTIPLY_ADD", 13, "to colour", b=(0.5, 0.5, 0.5), c=(0.5, 0.5, 0.5)),
+        "normal_h": Node("ShaderNodeNormalMap", 14, label="closure normal"),
+        "normal_s": Node("ShaderNodeNormalMap", 14, label="n"),
         # Fresnel: F = clamp(dot(eye, n), 0, 1).
-        "geometry": Node("ShaderNodeNewGeometry", 10),
-        "eye_dot_n": vmath("DOT_PRODUCT", 11, "eye . n"),
-        "fresnel": math("MULTIPLY", 12, "F = clamp(eye . n)", clamp=True, b=1.0),
-        # Glint: Specular Strength * pow(max(dot(reflect(L, n), eye), 0), Specular Power).
-        "sun": vmath("NORMALIZE", 11, "L"),
-        "reflect": vmath("REFLECT", 12, "reflect(L, n)"),
-        "glint_dot": vmath("DOT_PRODUCT", 13, ". eye"),
-        "glint_max": math("MAXIMUM", 14, "max(, 0)", b=0.0),
-        "glint_pow": math("POWER", 15, "pow(, Specular Power)"),
-        "glint": math("MULTIPLY", 16, "* Specular Strength"),
-        # Closures and the seeds' two lerps, then the additive glint.
+        "geometry": Node("ShaderNodeNewGeometry", 14),
+        "eye_dot_n": vmath("DOT_PRODUCT", 15, "eye . n"),
+        "fresnel": math("MULTIPLY", 16, "F = clamp(eye . n)", clamp=True, b=1.0),
+        "normal_colour": vmath("MULTIPLY_ADD", 16, "n * 0.5 + 0.5", b=(0.5, 0.5, 0.5), c=(0.5, 0.5, 0.5)),
+        # Glint: Sun Color * Specular Strength * pow(max(dot(reflect(L, n), eye), 0), Specular Power).
+        "sun": vmath("NORMALIZE", 15, "L"),
+        "reflect": vmath("REFLECT", 16, "reflect(L, n)"),
+        "glint_dot": vmath("DOT_PRODUCT", 17, ". eye"),
+        "glint_max": math("MAXIMUM", 18, "max(, 0)", b=0.0),
+        "glint_pow": math("POWER", 19, "pow(, Specular Power)"),
+        "glint": math("MULTIPLY", 20, "* Specular Strength"),
+        "glint_color": vmath("SCALE", 21, "* Sun Color"),
+        **_WEIGHT_NODES,
+        # The closures, weighted, and the one emission.
         "glossy": Node(
             "ShaderNodeBsdfAnisotropic",
-            13,
+            23,
             {"distribution": "GGX"},
-            {"Color": (1.0, 1.0, 1.0, 1.0), "Roughness": 0.0},
+            {"Roughness": 0.0},
             label="reflection",
         ),
         "refraction": Node(
             "ShaderNodeBsdfRefraction",
-            13,
+            23,
             {"distribution": "GGX"},
-            {"Color": (1.0, 1.0, 1.0, 1.0), "Roughness": 0.0, "IOR": 1.33},
+            {"Roughness": 0.0, "IOR": 1.33},
             label="refraction",
         ),
-        "lerp_fresnel": Node("ShaderNodeMixShader", 14, label="lerp(reflection, refraction, F)"),
-        "dull": Node("ShaderNodeEmission", 14, values={"Strength": 1.0}, label="dull colour"),
-        "lerp_dull": Node("ShaderNodeMixShader", 15, label="lerp(, dull, Dull Blend)"),
-        "glint_light": Node("ShaderNodeEmission", 17, values={"Color": (1.0, 1.0, 1.0, 1.0)}, label="glint"),
-        "final": Node("ShaderNodeAddShader", 18, label="+ glint"),
-        # Debug views: unlit F, bump normal and glint.
-        "view_f": Node("ShaderNodeEmission", 17, values={"Strength": 1.0}, label="view 3: F"),
-        "normal_colour": vmath("MULTIPLY_ADD", 17, "n * 0.5 + 0.5", b=(0.5, 0.5, 0.5), c=(0.5, 0.5, 0.5)),
-        "view_n": Node("ShaderNodeEmission", 18, values={"Strength": 1.0}, label="view 4: normal"),
-        "view_glint": Node("ShaderNodeEmission", 17, values={"Strength": 1.0}, label="view 5: glint"),
-        **_DEBUG_NODES,
+        "emission": Node("ShaderNodeEmission", 23, values={"Strength": 1.0}, label="dull colour + glint"),
+        "closures": Node("ShaderNodeAddShader", 24, label="reflection + refraction"),
+        "final": Node("ShaderNodeAddShader", 25, label="+ emission"),
     },
     links=(
         ("input:Wave Length", "bump_uv:Wave Length"),
@@ -214,8 +317,9 @@ SPEC = GroupSpec(
         ("input:Wind Force", "bump_uv:Wind Force"),
         ("input:Time", "bump_uv:Time"),
         ("bump_uv:Vector", "bump:Vector"),
+        *_LAYER_LINKS,
         ("input:Wind Direction", "frame:Wind Direction"),
-        ("bump:Color", "decode:#0"),
+        ("mean:Vector", "decode:#0"),
         ("decode:Vector", "t:Vector"),
         ("frame:Wind", "w:Vector"),
         ("t:X", "tx_wy:#0"),
@@ -250,6 +354,7 @@ SPEC = GroupSpec(
         ("geometry:Incoming", "eye_dot_n:#0"),
         ("normal_s:Normal", "eye_dot_n:#1"),
         ("eye_dot_n:Value", "fresnel:#0"),
+        ("normal_s:Normal", "normal_colour:#0"),
         ("input:Sun Direction", "sun:#0"),
         ("sun:Vector", "reflect:#0"),
         ("normal_s:Normal", "reflect:#1"),
@@ -260,22 +365,18 @@ SPEC = GroupSpec(
         ("input:Specular Power", "glint_pow:#1"),
         ("glint_pow:Value", "glint:#0"),
         ("input:Specular Strength", "glint:#1"),
+        ("input:Sun Color", "glint_color:#0"),
+        ("glint:Value", "glint_color:Scale"),
+        *_WEIGHT_LINKS,
         ("normal_h:Normal", "glossy:Normal"),
         ("normal_h:Normal", "refraction:Normal"),
-        ("fresnel:Value", "lerp_fresnel:Fac"),
-        ("glossy:BSDF", "lerp_fresnel:#1"),
-        ("refraction:BSDF", "lerp_fresnel:#2"),
-        ("input:Dull Color", "dull:Color"),
-        ("input:Dull Blend", "lerp_dull:Fac"),
-        ("lerp_fresnel:Shader", "lerp_dull:#1"),
-        ("dull:Emission", "lerp_dull:#2"),
-        ("glint:Value", "glint_light:Strength"),
-        ("lerp_dull:Shader", "final:#0"),
-        ("glint_light:Emission", "final:#1"),
-        ("fresnel:Value", "view_f:Color"),
-        ("normal_s:Normal", "normal_colour:#0"),
-        ("normal_colour:Vector", "view_n:Color"),
-        ("glint:Value", "view_glint:Color"),
-        *_DEBUG_LINKS,
+        ("w_reflect:Value", "glossy:Color"),
+        ("w_refract:Value", "refraction:Color"),
+        ("e_glint:Vector", "emission:Color"),
+        ("glossy:BSDF", "closures:#0"),
+        ("refraction:BSDF", "closures:#1"),
+        ("closures:Shader", "final:#0"),
+        ("emission:Emission", "final:#1"),
+        ("final:Shader", "output:Shader"),
     ),
 )

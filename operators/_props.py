@@ -19,7 +19,7 @@ def field_property(key):
         )
     if field.kind == "int":
         return bpy.props.IntProperty(
-            default=field.default, min=field.min, max=field.max, soft_max=512, **common
+            default=field.default, min=field.min, max=field.max, soft_max=min(512, field.max), **common
         )
     if field.kind == "bool":
         return bpy.props.BoolProperty(default=field.default, **common)

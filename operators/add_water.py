@@ -56,6 +56,7 @@ class OBJECT_OT_water_surface_add(object_utils.AddObjectHelper, bpy.types.Operat
     specular_power: field_property("specular_power")
     specular_strength: field_property("specular_strength")
     bump_strength: field_property("bump_strength")
+    bump_layers: field_property("bump_layers")
     mirror_setup: bpy.props.BoolProperty(
         name="Mirror Set-Up",
         description="Turn on EEVEE ray tracing and add a planar probe so the water shows a true mirror",

@@ -3,7 +3,8 @@
 import bpy
 
 from ..nodes.bump_image import IMAGE_NAME as BUMP_IMAGE_NAME
-from ..nodes.material import drive_sun, set_bump_image, water_node
+from ..nodes.material import drive_sun, glint_sun, set_bump_image, water_node
+from ..water import sun_link
 from ..water.values import water_material
 
 _items = {}  # kept alive for Blender's dynamic enums
@@ -56,8 +57,13 @@ class OBJECT_OT_water_surface_sun_set(_LakeChoice, bpy.types.Operator):
 
     def choose(self, context, material):
         sun = None if self.sun == "NONE" else context.scene.objects.get(self.sun)
+        previous = glint_sun(material)
         drive_sun(material, sun)
-        return f"Glint follows {'the default light' if sun is None else repr(sun.name)}"
+        if previous is not None and previous != sun:
+            sun_link.release_water(context.active_object, previous)
+        changes = sun_link.exclude_water(context.active_object, sun)
+        followed = "the default light" if sun is None else repr(sun.name)
+        return f"Glint follows {followed}" + "".join(f"; {change}" for change in changes)
 
 
 class OBJECT_OT_water_surface_bump_set(_LakeChoice, bpy.types.Operator):

@@ -2,7 +2,7 @@
 
 import bpy
 
-from ..water import waves
+from ..water import mirror, waves
 from ..water.values import is_water
 
 
@@ -19,6 +19,7 @@ class OBJECT_OT_water_waves_add(bpy.types.Operator):
             self.report({"ERROR"}, "The active object is not water (no Water Surface material)")
             return {"CANCELLED"}
         waves.add_waves(obj)
+        refit = mirror.fit_probe(obj)
         if len(obj.data.vertices) <= 4:
             self.report(
                 {"WARNING"},
@@ -26,5 +27,5 @@ class OBJECT_OT_water_waves_add(bpy.types.Operator):
                 "Add water with a higher Resolution, or subdivide it",
             )
         else:
-            self.report({"INFO"}, f"Added waves to '{obj.name}'")
+            self.report({"INFO"}, f"Added waves to '{obj.name}'" + "".join(f"; {change}" for change in refit))
         return {"FINISHED"}

@@ -84,6 +84,7 @@ FIELDS = (
     _from_socket("specular_power", "Specular Power", "float"),
     _from_socket("specular_strength", "Specular Strength", "float"),
     _from_socket("bump_strength", "Bump Strength", "float"),
+    _from_socket("bump_layers", "Bump Layers", "int"),
 )
 BY_KEY = {field.key: field for field in FIELDS}
 # The shader's values: everything but the plane's size.

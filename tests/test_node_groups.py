@@ -12,11 +12,13 @@ EXPECTED_INPUTS = {
     "Wind Direction": (0.0, 1.0, 0.0),
     "Wind Force": 0.02,
     "Time": 0.0,
+    "Bump Layers": 1,
     "Dull Color": (0.3, 0.3, 0.5, 1.0),
     "Dull Blend": 0.2,
     "Specular Power": 256.0,
     "Specular Strength": 1.0,
     "Sun Direction": (-0.57735, 0.57735, -0.57735),
+    "Sun Color": (1.0, 1.0, 1.0, 1.0),
     "Bump Strength": 1.0,
     "Debug View": 0,
 }

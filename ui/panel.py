@@ -23,7 +23,7 @@ _OCEAN_INPUTS = (
 )
 
 _SECTIONS = (
-    ("Waves", "MOD_WAVE", ("Wave Height", "Wave Length", "Bump Strength")),
+    ("Waves", "MOD_WAVE", ("Wave Height", "Wave Length", "Bump Strength", "Bump Layers")),
     ("Wind", "FORCE_WIND", ("Wind Direction", "Wind Force")),
     ("Tint", "COLOR", ("Dull Color", "Dull Blend")),
     ("Glint", "LIGHT_SUN", ("Specular Power", "Specular Strength")),

@@ -6,13 +6,20 @@ planar light probe. EEVEE ignores a probe whose capture contains the surface
 that receives it, so the probe is lifted 1 cm above the water (more than its
 clip start, less than its influence distance) and the water is also hidden
 from planar captures (`hide_probe_plane`). The probe is a child of the water:
-it follows it when moved, rotated or scaled.
+it follows it when moved, rotated or scaled. It is fitted to the water's own
+mesh (the rest plane), never to the evaluated waves, so it is the same at every
+frame; with waves its influence reaches their crests and troughs.
+
+The followed sun is kept off the water by light linking (`sun_link`), so the
+water's only highlight is its glint.
 """
 
 import bpy
+import numpy as np
 
 from ..engine import eevee_engine_id, enable_ray_tracing
-from ..nodes.material import water_node
+from ..nodes.material import glint_sun, water_node
+from . import sun_link
 from .values import water_material
 from .waves import amplitude_sum, wave_modifier
 
@@ -39,23 +46,48 @@ def find_probe(water):
     return None
 
 
+def rest_bounds(water):
+    """(low, high) corners of the water's own mesh: the rest plane, whatever its modifiers do."""
+    mesh = water.data
+    if len(mesh.vertices) == 0:
+        return np.zeros(3), np.zeros(3)
+    co = np.empty(len(mesh.vertices) * 3, dtype=np.float32)
+    mesh.vertices.foreach_get("co", co)
+    co = co.reshape(-1, 3)
+    return co.min(axis=0), co.max(axis=0)
+
+
 def _place_probe(probe, water):
-    """Covers the water's local bounds, lifted PROBE_LIFT metres above its top."""
-    corners = [tuple(c) for c in water.bound_box]
-    xs, ys, zs = ([c[i] for c in corners] for i in range(3))
+    """Covers the rest plane's local bounds, lifted PROBE_LIFT metres above its top."""
+    low, high = rest_bounds(water)
     scale_z = abs(water.matrix_world.to_scale().z) or 1.0
     probe.matrix_parent_inverse.identity()
-    probe.location = ((min(xs) + max(xs)) / 2, (min(ys) + max(ys)) / 2, max(zs) + PROBE_LIFT / scale_z)
+    probe.location = ((low[0] + high[0]) / 2, (low[1] + high[1]) / 2, high[2] + PROBE_LIFT / scale_z)
     probe.rotation_euler = (0.0, 0.0, 0.0)
     # A planar probe spans -1..1 in its local X and Y; keep its own Z at world scale 1.
-    probe.scale = (max((max(xs) - min(xs)) / 2, 1e-3), max((max(ys) - min(ys)) / 2, 1e-3), 1.0 / scale_z)
+    probe.scale = (max((high[0] - low[0]) / 2, 1e-3), max((high[1] - low[1]) / 2, 1e-3), 1.0 / scale_z)
 
 
-def _ensure_probe(scene, water):
+def fit_probe(water):
+    """Refits the water's probe to its rest plane and its influence to the waves' reach.
+
+    Returns what changed, in words; nothing when the water has no probe.
+    """
     probe = find_probe(water)
-    if probe is not None:
-        _place_probe(probe, water)
-        return probe, f"planar probe '{probe.name}' fitted to the water"
+    if probe is None:
+        return []
+    _place_probe(probe, water)
+    changes = [f"planar probe '{probe.name}' fitted to the water's rest plane"]
+    modifier = wave_modifier(water)
+    if modifier is not None:  # the probe must reach the crests and the troughs
+        reach = amplitude_sum(modifier) + 4 * PROBE_LIFT
+        if probe.data.influence_distance < reach:
+            probe.data.influence_distance = reach
+            changes.append(f"probe influence widened to {reach:.2f} m for the waves")
+    return changes
+
+
+def _add_probe(scene, water):
     data = bpy.data.lightprobes.new(f"{water.name} Mirror", "PLANE")
     data.influence_distance = max(data.influence_distance, 4 * PROBE_LIFT)
     probe = bpy.data.objects.new(f"{water.name} Mirror", data)
@@ -63,8 +95,7 @@ def _ensure_probe(scene, water):
     for collection in water.users_collection or (scene.collection,):
         collection.objects.link(probe)
     probe.parent = water
-    _place_probe(probe, water)
-    return probe, f"added planar probe '{probe.name}'"
+    return probe
 
 
 def setup_mirror(scene, water):
@@ -99,12 +130,9 @@ def setup_mirror(scene, water):
     if not water.hide_probe_plane:
         water.hide_probe_plane = True
         changes.append(f"'{water.name}' hidden from planar captures")
-    probe, what = _ensure_probe(scene, water)
-    changes.append(what)
-    modifier = wave_modifier(water)
-    if modifier is not None:  # the probe must reach the crests and the troughs
-        reach = amplitude_sum(modifier) + 4 * PROBE_LIFT
-        if probe.data.influence_distance < reach:
-            probe.data.influence_distance = reach
-            changes.append(f"probe influence widened to {reach:.2f} m for the waves")
+    if find_probe(water) is None:
+        changes.append(f"added planar probe '{_add_probe(scene, water).name}'")
+    changes += fit_probe(water)
+    if water_node(material) is not None:
+        changes += sun_link.exclude_water(water, glint_sun(material))
     return changes

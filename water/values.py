@@ -30,6 +30,8 @@ def read_values(material):
         value = node.inputs[field.socket].default_value
         if field.kind == "float":
             values[field.key] = float(value)
+        elif field.kind == "int":
+            values[field.key] = int(value)
         else:
             values[field.key] = tuple(float(v) for v in value[: 2 if field.kind == "vec2" else 3])
     return values
