@@ -242,3 +242,36 @@ def test_lake_only_choices_refuse_ocean_water_with_a_message(scene):
     bpy.ops.object.water_surface_add(preset="lake", mirror_setup=False)
     with pytest.raises(RuntimeError, match="builds its own mesh"):
         bpy.ops.object.water_surface_preset_apply(preset="ocean")
+
+
+def test_probe_stays_on_the_rest_plane_with_waves_at_any_frame(scene):
+    """Add Waves and `waves=True` fit the probe to the rest plane and widen it to the crests, at any frame."""
+    waves = harness.addon("water.waves")
+    bpy.ops.object.water_surface_add(size=40, resolution=64)
+    water = bpy.context.active_object
+    probe = _probe(water)
+    assert probe.data.influence_distance < 0.5  # still water: a thin influence
+    scene.frame_set(1)
+    assert bpy.ops.object.water_waves_add() == {"FINISHED"}
+    reach = waves.amplitude_sum(waves.wave_modifier(water))
+    assert reach > 0.5
+    assert probe.data.influence_distance >= reach, "Add Waves widens the probe to the crests"
+    fitted = {}
+    for frame in (1, 40):
+        scene.frame_set(frame)
+        bpy.context.view_layer.update()
+        top = max((water.matrix_world @ Vector(c)).z for c in water.bound_box)
+        assert top > 0.5, "the waves lift the evaluated surface"
+        bpy.ops.object.water_mirror_setup()
+        bpy.context.view_layer.update()
+        fitted[frame] = (probe.matrix_world.copy(), probe.data.influence_distance)
+        assert probe.matrix_world.translation.z == pytest.approx(0.01, abs=1e-5), frame
+        assert probe.data.influence_distance >= reach
+    first, later = fitted[1][0], fitted[40][0]
+    assert max(abs(a - b) for row_a, row_b in zip(first, later) for a, b in zip(row_a, row_b)) < 1e-6
+    assert fitted[1][1] == fitted[40][1]
+    # Added with waves from the start: the same probe.
+    bpy.ops.object.water_surface_add(size=40, resolution=64, waves=True, location=(100, 0, 0))
+    other = _probe(bpy.context.active_object)
+    assert other.matrix_world.translation.z == pytest.approx(0.01, abs=1e-5)
+    assert other.data.influence_distance == pytest.approx(fitted[1][1])

@@ -197,3 +197,29 @@ def test_glint_follows_the_sun(pond, render):
         node.inputs["Specular Strength"].default_value = 0.0
         node.inputs["Debug View"].default_value = 0
     assert math.dist(*peaks) > 15
+
+
+def test_wave_height_widens_the_wobble_of_a_mirrored_block(pond, shown, render, project):
+    """Wave Height tilts the reflection: the red block's mirror image frays more the higher it is."""
+    scene = pond["scene"]
+    node = harness.addon("nodes.material").water_node(pond["water"].active_material)
+    camera = harness.add_camera(scene, (0, -4, 2), (0, 6, 0))
+    shown("red")
+    ((col, row),) = project(scene, camera, [(0, 6, -1)])
+    band = np.zeros((scene.render.resolution_y, scene.render.resolution_x), dtype=bool)
+    band[int(row) - 12 : int(row) + 13, int(col) - 16 : int(col) + 17] = True
+    node.inputs["Wave Length"].default_value = 0.5  # ripples a few pixels wide at this distance
+    images = {}
+    try:
+        for height in (0.0, 0.1, 0.4):
+            node.inputs["Wave Height"].default_value = height
+            images[height] = render(scene, f"wobble-{height}", exr=True)[..., :3]
+    finally:
+        node.inputs["Wave Height"].default_value = 0.0
+        node.inputs["Wave Length"].default_value = 0.1
+    # Red where the still mirror shows the block; the wobble moves red pixels in and out of it.
+    still = images[0.0][..., 0] > 0.5
+    assert still[band].sum() > 20, "the mirror image is in the band"
+    changed = {h: (np.abs(images[h] - images[0.0]).max(axis=-1) > 0.05)[band].sum() for h in (0.1, 0.4)}
+    assert changed[0.1] > 5, changed
+    assert changed[0.4] > 1.5 * changed[0.1], changed
