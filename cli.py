@@ -49,11 +49,17 @@ def _parser():
             kind = int if field.kind == "int" else float
             add.add_argument(option, type=kind, nargs=width, dest=field.key, help=field.tooltip)
 
-    render = commands.add_parser("render", help="render one frame of a saved .blend")
+    render = commands.add_parser("render", help="render frames of a saved .blend")
     render.add_argument("source", help="the .blend to render")
-    render.add_argument("target", help="the image to write (.png, .exr, .jpg, .tif)")
+    render.add_argument(
+        "target",
+        help="the image to write (.png, .exr, .jpg, .tif); with --frames each run of # in it "
+        "becomes the zero-padded frame number, as with blender -b -o",
+    )
     render.add_argument("--scene", help="scene name (default: the file's active scene)")
-    render.add_argument("--frame", type=int, help="frame to render (default: the file's current frame)")
+    which = render.add_mutually_exclusive_group()
+    which.add_argument("--frame", type=int, help="one frame to render (default: the file's current frame)")
+    which.add_argument("--frames", help="frames to render, N or FIRST-LAST (e.g. 1-48), one line a frame")
     render.add_argument("--samples", type=int, help="render samples (default: the file's)")
 
     commands.add_parser("presets", help="list the presets")
@@ -81,8 +87,15 @@ def main(argv):
                 **values,
             )
         else:
+            frames = files.parse_frames(args.frames) if args.frames is not None else None
             done = files.render_file(
-                args.source, args.target, scene=args.scene, frame=args.frame, samples=args.samples
+                args.source,
+                args.target,
+                scene=args.scene,
+                frame=args.frame,
+                samples=args.samples,
+                frames=frames,
+                progress=lambda line: print(line, flush=True),
             )
     except (UsageError, files.FileJobError) as error:
         print(f"{COMMAND}: error: {error}", file=sys.stderr)

@@ -1,9 +1,10 @@
-"""Whole-file jobs for pipelines: add water to a saved `.blend`, render one frame of one.
+"""Whole-file jobs for pipelines: add water to a saved `.blend`, render frames of one.
 
 Used by the command line (`blender -c water_surface ...`) and callable from any
 `bpy` script. Errors are `FileJobError` with one line that says what to fix.
 """
 
+import re
 from pathlib import Path
 
 import bpy
@@ -66,26 +67,76 @@ def add_water_to_file(source, target, scene=None, preset="lake", mirror_setup=Tr
     return f"{done}; saved {target}"
 
 
-def render_file(source, target, scene=None, frame=None, samples=None):
-    """Opens `source` and renders one frame of its scene to `target` (.png, .exr, .jpg, .tif)."""
+def frame_path(target, frame):
+    """`target` for one frame, as `blender -b -o` names it: each run of `#` becomes the
+    zero-padded frame number; without `#`, four digits go before the extension."""
+    target = Path(target)
+    if "#" in target.name:
+        name = re.sub(r"#+", lambda run: f"{frame:0{len(run.group())}d}", target.name)
+    else:
+        name = f"{target.stem}{frame:04d}{target.suffix}"
+    return target.with_name(name)
+
+
+def parse_frames(text):
+    """ "7" or "1-48" as a list of frame numbers; FileJobError when it is neither."""
+    match = re.fullmatch(r"\s*(-?\d+)\s*(?:-\s*(-?\d+)\s*)?", text or "")
+    if match is None:
+        raise FileJobError(f"--frames takes N or FIRST-LAST, not '{text}'")
+    first = int(match.group(1))
+    last = int(match.group(2)) if match.group(2) is not None else first
+    if last < first:
+        raise FileJobError(f"--frames {text}: the last frame comes before the first")
+    for frame in (first, last):
+        if not MIN_FRAME <= frame <= MAX_FRAME:
+            raise FileJobError(f"frame {frame} is outside Blender's range {MIN_FRAME}..{MAX_FRAME}")
+    return list(range(first, last + 1))
+
+
+MIN_FRAME, MAX_FRAME = -1048574, 1048574  # Blender's MINAFRAME and MAXFRAME
+
+
+def render_file(source, target, scene=None, frame=None, samples=None, frames=None, progress=print):
+    """Opens `source` and renders frames of its scene to `target` (.png, .exr, .jpg, .tif).
+
+    `frames`, a list of frame numbers, renders each to `frame_path(target, n)`, one
+    `progress` line a frame, as a farm worker would (each frame from the file's own
+    state: nothing carries over from the frame before). Otherwise one frame
+    (`frame`, default the file's current one) is written to `target` as named.
+    """
     target = _output_folder(target)
     file_format = IMAGE_FORMATS.get(target.suffix.lower())
     if file_format is None:
         raise FileJobError(f"unknown image type '{target.suffix}' (use {', '.join(IMAGE_FORMATS)})")
+    if samples is not None and samples < 1:
+        raise FileJobError(f"samples must be at least 1, not {samples}")
+    for number in frames or ([frame] if frame is not None else []):
+        if not MIN_FRAME <= number <= MAX_FRAME:
+            raise FileJobError(f"frame {number} is outside Blender's range {MIN_FRAME}..{MAX_FRAME}")
     _open(source)
     scene = _scene(scene)
     if scene.camera is None:
         raise FileJobError(f"scene '{scene.name}' has no camera to render from")
-    if frame is not None:
-        scene.frame_set(frame)
     if samples is not None:
-        if samples < 1:
-            raise FileJobError(f"samples must be at least 1, not {samples}")
         scene.eevee.taa_render_samples = samples
         scene.cycles.samples = samples
     scene.render.image_settings.file_format = file_format
-    scene.render.filepath = str(target)
     scene.render.use_file_extension = False
+    if not frames:
+        if frame is not None:
+            scene.frame_set(frame)
+        _render_still(scene, target)
+        return f"rendered scene '{scene.name}' frame {scene.frame_current} to {target}"
+    for done, number in enumerate(frames, start=1):
+        path = frame_path(target, number)
+        scene.frame_set(number)
+        _render_still(scene, path)
+        progress(f"water_surface: frame {number} ({done}/{len(frames)}) rendered to {path}")
+    first = frame_path(target, frames[0])
+    return f"rendered scene '{scene.name}' frames {frames[0]}-{frames[-1]} ({first.name}, ...)"
+
+
+def _render_still(scene, path):
+    scene.render.filepath = str(path)
     with bpy.context.temp_override(scene=scene):
         bpy.ops.render.render(write_still=True, scene=scene.name)
-    return f"rendered scene '{scene.name}' frame {scene.frame_current} to {target}"

@@ -1,0 +1,128 @@
+"""Render farms: a file with every kind of water the add-on makes, checked with the farm's own tools.
+
+The file holds a lake (mirror set-up on), a lake with waves and the seeds' ocean.
+Blender Asset Tracer (BAT, the packer Flamenco uses) must find nothing outside
+the file and nothing missing; its pack must render, from another folder with no
+add-on and auto-run scripts off, as the original does with the add-on. Frames
+rendered by separate worker processes, in any order, must equal the same frames
+of one `-a`-style job. The workers are `tools/farm_worker.py`: plain bpy with a
+fresh user folder, where the add-on is not installed.
+"""
+
+import os
+import subprocess
+import sys
+
+import bpy
+import numpy as np
+import pytest
+
+import harness
+
+pytestmark = pytest.mark.render
+
+FRAMES = (1, 13)
+
+
+@pytest.fixture(scope="module")
+def shot(addon, eevee, tmp_path_factory):
+    """The saved shot and its render of frame 1 made with the add-on enabled."""
+    folder = tmp_path_factory.mktemp("shot")
+    scene = harness.clean_scene(engine=eevee, width=64, height=36, samples=2)
+    harness.set_world_color(scene, (0.35, 0.5, 0.8))
+    bpy.ops.object.water_surface_add(size=12.0, location=(-7, 0, 0))
+    bpy.ops.object.water_surface_add(
+        size=12.0, resolution=48, waves=True, wave_length=1.0, location=(6, 0, 0)
+    )
+    bpy.ops.object.water_surface_add(preset="ocean", size=40.0, resolution=64, location=(0, 30, -1))
+    harness.add_camera(scene, (0, -16, 7), (0, 4, 0))
+    path = folder / "shot.blend"
+    bpy.ops.wm.save_as_mainfile(filepath=str(path))
+    scene.frame_set(FRAMES[0])
+    original = harness.render(scene, folder / "original.exr", exr=True)
+    return {"path": path, "folder": folder, "original": original}
+
+
+def _work(*args):
+    """Runs one farm worker process; fails the test with its output when it fails."""
+    env = {**os.environ, "PYTHONPATH": str(harness.ROOT / "tools")}
+    env.pop("BLENDER_USER_RESOURCES", None)
+    done = subprocess.run(
+        [sys.executable, str(harness.ROOT / "tools" / "farm_worker.py"), *map(str, args)],
+        capture_output=True,
+        text=True,
+        env=env,
+        timeout=600,
+        check=False,
+    )
+    assert done.returncode == 0, done.stdout[-2000:] + done.stderr[-2000:]
+
+
+def _bat(*args):
+    """Runs BAT's own command line (`bat ARGS`) in a fresh process; returns its exit status and output.
+
+    BAT 2 works inside Blender through bpy (here the bpy module, with no add-on installed);
+    BAT 1 (Python 3.11, Blender 4.x) reads the file itself.
+    """
+    code = (  # BAT 2 reads its arguments after "--", as in `blender -b --python-expr ... -- pack ...`
+        "import sys; args = sys.argv[1:]; import bpy, blender_asset_tracer as bat; "
+        "sys.argv = ['bat', *([] if bat.__version__.startswith('1.') else ['--']), *args]; "
+        "from blender_asset_tracer import cli; cli.cli_main()"
+    )
+    env = {**os.environ}
+    env.pop("BLENDER_USER_RESOURCES", None)
+    done = subprocess.run(
+        [sys.executable, "-c", code, *map(str, args)],
+        capture_output=True,
+        text=True,
+        env=env,
+        timeout=600,
+        check=False,
+    )
+    return done.returncode, done.stdout + done.stderr
+
+
+def test_bat_finds_nothing_outside_or_missing_and_its_pack_renders_the_same(shot, tmp_path):
+    target = tmp_path / "packed"
+    status, output = _bat("pack", shot["path"], target)
+    assert status in (0, None), output
+    assert "missing" not in output.lower(), output
+    packed = sorted(p.relative_to(target).as_posix() for p in target.rglob("*") if p.is_file())
+    assert [p for p in packed if p != "pack-info.txt"] == ["shot.blend"], f"BAT packed more: {packed}"
+    _work(target / "shot.blend", tmp_path / "packed_####.exr", FRAMES[0])
+    pixels = harness.load_image(tmp_path / f"packed_{FRAMES[0]:04d}.exr")
+    difference = np.abs(pixels[..., :3] - shot["original"][..., :3]).mean()
+    assert difference < 0.01, f"mean difference {difference:.4f}"
+    assert shot["original"][..., :3].std() > 0.02, "the shot shows something"
+
+
+def test_frames_split_across_workers_equal_one_animation_job(shot, tmp_path):
+    for frame in reversed(FRAMES):  # one worker a frame, the later frame first
+        _work(shot["path"], tmp_path / "split_####.exr", frame)
+    _work(
+        shot["path"], tmp_path / "job_####.exr", "--animation", FRAMES[0], FRAMES[-1], FRAMES[-1] - FRAMES[0]
+    )
+    images = {}
+    for frame in FRAMES:
+        split = harness.load_image(tmp_path / f"split_{frame:04d}.exr")[..., :3]
+        job = harness.load_image(tmp_path / f"job_{frame:04d}.exr")[..., :3]
+        difference = np.abs(split - job).mean()
+        assert difference < 0.005, f"frame {frame}: mean difference {difference:.4f}"
+        images[frame] = split
+    moved = np.abs(images[FRAMES[0]] - images[FRAMES[-1]]).mean()
+    assert moved > 0.005, f"the water moves between the frames ({moved:.4f})"
+
+
+def test_cli_renders_a_range_with_padding_and_a_line_a_frame(shot, tmp_path, capfd):
+    cli = harness.addon("cli")
+    status = cli.main(["render", str(shot["path"]), str(tmp_path / "cli_###.png"), "--frames", "3-5"])
+    out = capfd.readouterr().out
+    assert status == 0
+    assert sorted(p.name for p in tmp_path.glob("cli_*.png")) == ["cli_003.png", "cli_004.png", "cli_005.png"]
+    lines = [line for line in out.splitlines() if line.startswith("water_surface: frame")]
+    assert [line.split()[2] for line in lines] == ["3", "4", "5"]
+    assert cli.main(["render", str(shot["path"]), str(tmp_path / "one.png"), "--frames", "7"]) == 0
+    assert (tmp_path / "one0007.png").is_file()
+    for bad in ("5-3", "x", "1-99999999999"):
+        assert cli.main(["render", str(shot["path"]), str(tmp_path / "bad.png"), "--frames", bad]) == 1
+    assert not list(tmp_path.glob("bad*"))
