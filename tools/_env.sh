@@ -3,7 +3,7 @@
 # finds the Python it needs, makes or reuses a cached virtual environment and
 # checks the system libraries bpy loads. Sourced, never run.
 #
-#   WATER_SURFACE_BLENDER  bpy version: 5.2.3 (default), 5.0.1, 4.5.15, 4.2.23
+#   WATER_SURFACE_BLENDER  bpy version: 5.2.3 (default), 4.5.15, 4.2.23
 #   WATER_SURFACE_CACHE    where venvs live (default ~/.cache/water_surface)
 #   WATER_SURFACE_PYTHON   a Python interpreter to use instead of searching
 
@@ -18,7 +18,7 @@ WS_CACHE="${WATER_SURFACE_CACHE:-${XDG_CACHE_HOME:-$HOME/.cache}/water_surface}"
 # Python minor version each supported bpy is built for.
 ws_python_for() {
     case "$1" in
-        4.2.23|4.5.15|5.0.1) echo 3.11 ;;
+        4.2.23|4.5.15) echo 3.11 ;;
         5.2.3) echo 3.13 ;;
         *) return 1 ;;
     esac
@@ -52,7 +52,7 @@ ws_pick_blender() {
     WS_BLENDER="${asked:-5.2.3}"
     local minor
     minor="$(ws_python_for "$WS_BLENDER")" ||
-        ws_die "unsupported Blender '$WS_BLENDER': pick one of 4.2.23, 4.5.15, 5.0.1, 5.2.3 (WATER_SURFACE_BLENDER)"
+        ws_die "unsupported Blender '$WS_BLENDER': pick one of 4.2.23, 4.5.15, 5.2.3 (WATER_SURFACE_BLENDER)"
     WS_PY_BIN="$(ws_find_python "$minor")"
     if [ -z "$WS_PY_BIN" ] && [ -z "$asked" ]; then
         ws_say "no Python 3.13 found, so using Blender 4.5.15 (Python 3.11) instead of 5.2.3; install Python 3.13 for the newest."

@@ -138,5 +138,11 @@ def render_file(source, target, scene=None, frame=None, samples=None, frames=Non
 
 def _render_still(scene, path):
     scene.render.filepath = str(path)
-    with bpy.context.temp_override(scene=scene):
-        bpy.ops.render.render(write_still=True, scene=scene.name)
+    try:
+        with bpy.context.temp_override(scene=scene):
+            bpy.ops.render.render(write_still=True, scene=scene.name)
+    except RuntimeError as error:  # one line and a non-zero exit for the farm, not a traceback
+        message = str(error).strip().splitlines()[-1] if str(error).strip() else "render failed"
+        raise FileJobError(f"frame {scene.frame_current}: {message}") from error
+    if not Path(path).is_file():
+        raise FileJobError(f"frame {scene.frame_current}: nothing was written to {path}")
