@@ -6,6 +6,7 @@ The work itself is done by plain functions in `water/files.py`.
 """
 
 import argparse
+import math
 import sys
 
 import bpy
@@ -17,16 +18,70 @@ COMMAND = "water_surface"
 _handle = None
 
 
+MAX_SAMPLES = 1 << 24  # Cycles' own limit; far beyond any useful EEVEE count
+
+
 class UsageError(Exception):
     pass
+
+
+class _ParserExitError(Exception):
+    """argparse is done (`--help`): return this status from `main`, not `sys.exit` inside Blender."""
+
+    def __init__(self, status):
+        super().__init__(status)
+        self.status = status
 
 
 class _Parser(argparse.ArgumentParser):
     def error(self, message):  # one line, not argparse's usage dump and exit
         raise UsageError(message)
 
+    def exit(self, status=0, message=None):
+        if message:
+            print(message, end="", file=sys.stderr)
+        raise _ParserExitError(status)
+
+
+def _whole(what, low, high):
+    """argparse type: an integer within low..high, refused (not clamped) outside it."""
+
+    def parse(text):
+        try:
+            number = int(text)
+        except ValueError:
+            raise argparse.ArgumentTypeError(f"invalid int value: '{text}'") from None
+        if number < low:
+            raise argparse.ArgumentTypeError(f"{what} must be at least {low}, not {number}")
+        if number > high:
+            raise argparse.ArgumentTypeError(f"{what} must be at most {high}, not {number}")
+        return number
+
+    return parse
+
+
+def _finite(text):
+    """argparse type: a float that is a number (values outside a field's range are clamped later)."""
+    try:
+        number = float(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"invalid float value: '{text}'") from None
+    if not math.isfinite(number):
+        raise argparse.ArgumentTypeError(f"must be a finite number, not '{text}'")
+    return number
+
+
+def _one_line(error, named=False):
+    """The error's message on one line; `named` puts its type first (for errors nobody foresaw)."""
+    text = " ".join(line.strip() for line in str(error).splitlines() if line.strip())
+    if named or not text:
+        return f"{type(error).__name__}: {text}" if text else type(error).__name__
+    return text
+
 
 def _parser():
+    from .water import files
+
     parser = _Parser(prog=f"blender -c {COMMAND}", description="Water Surface from the command line")
     commands = parser.add_subparsers(dest="command", required=True, parser_class=_Parser)
 
@@ -46,7 +101,7 @@ def _parser():
             add.add_argument(option, choices=field.choices, dest=field.key, help=field.tooltip)
         else:
             width = {"float": None, "int": None, "vec2": 2, "color": 3}[field.kind]
-            kind = int if field.kind == "int" else float
+            kind = _whole(field.key, int(field.min), int(field.max)) if field.kind == "int" else _finite
             add.add_argument(option, type=kind, nargs=width, dest=field.key, help=field.tooltip)
 
     render = commands.add_parser("render", help="render frames of a saved .blend")
@@ -58,16 +113,27 @@ def _parser():
     )
     render.add_argument("--scene", help="scene name (default: the file's active scene)")
     which = render.add_mutually_exclusive_group()
-    which.add_argument("--frame", type=int, help="one frame to render (default: the file's current frame)")
+    which.add_argument(
+        "--frame",
+        type=_whole("frame", files.MIN_FRAME, files.MAX_FRAME),
+        help="one frame to render (default: the file's current frame)",
+    )
     which.add_argument("--frames", help="frames to render, N or FIRST-LAST (e.g. 1-48), one line a frame")
-    render.add_argument("--samples", type=int, help="render samples (default: the file's)")
+    render.add_argument(
+        "--samples", type=_whole("samples", 1, MAX_SAMPLES), help="render samples (default: the file's)"
+    )
 
     commands.add_parser("presets", help="list the presets")
     return parser
 
 
 def main(argv):
-    """Runs one command; returns its exit status."""
+    """Runs one command; returns its exit status.
+
+    Every failure is one "water_surface: error:" line on stderr and a non-zero status
+    (2: the command line is wrong, 1: the job cannot run); nothing raises out of here
+    but KeyboardInterrupt, so Blender never prints a traceback for this command.
+    """
     from .water import files
 
     try:
@@ -84,6 +150,7 @@ def main(argv):
                 scene=args.scene,
                 preset=args.preset,
                 mirror_setup=not args.no_mirror,
+                keep_session=False,  # the command's session is thrown away: no snapshot to restore
                 **values,
             )
         else:
@@ -96,10 +163,16 @@ def main(argv):
                 samples=args.samples,
                 frames=frames,
                 progress=lambda line: print(line, flush=True),
+                keep_session=False,
             )
+    except _ParserExitError as stop:  # --help: argparse has printed it
+        return stop.status
     except (UsageError, files.FileJobError) as error:
-        print(f"{COMMAND}: error: {error}", file=sys.stderr)
+        print(f"{COMMAND}: error: {_one_line(error)}", file=sys.stderr)
         return 2 if isinstance(error, UsageError) else 1
+    except Exception as error:  # a bug or something unforeseen: still one line, no traceback
+        print(f"{COMMAND}: error: {_one_line(error, named=True)}", file=sys.stderr)
+        return 1
     print(f"{COMMAND}: {done}")
     return 0
 

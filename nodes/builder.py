@@ -1,5 +1,8 @@
-"""Turns a `GroupSpec` into a node tree: get or create by name, versioned, laid out in columns.
+"""Turns a `GroupSpec` into a node tree: found by the add-on's mark, versioned, laid out in columns.
 
+* Only groups the add-on made are reused (`ownership`): a user's group with the
+  same name is never touched, ours is made beside it under another name. Groups
+  that sample an image are found by the image they sample, not by their name.
 * A group whose stamped version equals the spec's is reused as it is.
 * An older one is upgraded in place: its interface is brought in line socket by
   socket (so materials keep their links and values) and its nodes rebuilt.
@@ -9,9 +12,9 @@
 
 import bpy
 
+from .ownership import VERSION_KEY, mark, owned
 from .spec import BUMP_IMAGE
 
-VERSION_KEY = "water_surface_version"
 COLUMN_WIDTH = 240
 ROW_GAP = 40
 SOCKET_HEIGHT = 22
@@ -26,33 +29,58 @@ def ensure_group(spec, specs, name=None, image=None):
     """The node tree for `spec`, built or upgraded if needed.
 
     `specs` maps the names of nested groups to their specs; `image` fills the
-    spec's `BUMP_IMAGE` slots, and `name` (default: the spec's) names the tree.
+    spec's `BUMP_IMAGE` slots, and `name` (default: the spec's) names a new tree.
     """
-    name = name or spec.name
-    for nested in spec.nested_groups():
-        ensure_group(specs[nested], specs)
-    tree = bpy.data.node_groups.get(name)
-    if tree is not None and tree.bl_idname != spec.tree_type:
-        raise NodeGroupError(
-            f"a node group named '{name}' exists but is a {tree.bl_idname}, not a {spec.tree_type}: rename it"
-        )
+    nested = {group: ensure_group(specs[group], specs) for group in spec.nested_groups()}
+    tree = find_group(spec, image)
     if tree is not None and tree.get(VERSION_KEY, 0) >= spec.version:
+        _adopt_image(tree, image)
         return tree
     created = tree is None
     if created:
-        tree = bpy.data.node_groups.new(name, spec.tree_type)
+        tree = bpy.data.node_groups.new(name or spec.name, spec.tree_type)
     if spec.tree_type == "GeometryNodeTree":
         tree.is_modifier = True  # offered in the Add Modifier menu
     try:
         _sync_interface(tree, spec)
-        _rebuild_nodes(tree, spec, image)
+        _rebuild_nodes(tree, spec, image, nested)
     except Exception as error:
+        tree_name = tree.name
         if created:
             bpy.data.node_groups.remove(tree)
-        raise NodeGroupError(f"building node group '{name}' failed: {error}") from error
-    tree[VERSION_KEY] = spec.version
+        raise NodeGroupError(f"building node group '{tree_name}' failed: {error}") from error
+    mark(tree, spec.name, spec.version)
     tree.description = spec.description
     return tree
+
+
+def _uses_image(spec):
+    return any(value == BUMP_IMAGE for node in spec.nodes.values() for value in node.props.values())
+
+
+def _images(tree):
+    return {node.image for node in tree.nodes if node.type == "TEX_IMAGE"}
+
+
+def find_group(spec, image=None):
+    """The add-on's own local group for `spec` (sampling `image`, when the spec samples one), or None.
+
+    A group whose image was deleted is taken for any image (it is given the new one).
+    """
+    candidates = [t for t in owned(bpy.data.node_groups, spec.name) if t.bl_idname == spec.tree_type]
+    if not _uses_image(spec):
+        return candidates[0] if candidates else None
+    exact = [t for t in candidates if _images(t) == {image}]
+    lost = [t for t in candidates if _images(t) == {None}]
+    return (exact or lost or [None])[0]
+
+
+def _adopt_image(tree, image):
+    """Gives a reused group whose image was deleted the image it is asked for."""
+    if image is not None and _images(tree) == {None}:
+        for node in tree.nodes:
+            if node.type == "TEX_IMAGE":
+                node.image = image
 
 
 def _interface_sockets(tree):
@@ -95,7 +123,7 @@ def _set_socket(item, socket):
     item.hide_value = socket.hide_value
 
 
-def _rebuild_nodes(tree, spec, image):
+def _rebuild_nodes(tree, spec, image, nested):
     tree.nodes.clear()
     nodes = {
         "input": tree.nodes.new("NodeGroupInput"),
@@ -103,18 +131,18 @@ def _rebuild_nodes(tree, spec, image):
     }
     nodes["input"].location = (0, 0)
     for key, description in spec.nodes.items():
-        nodes[key] = _new_node(tree, key, description, image)
+        nodes[key] = _new_node(tree, key, description, image, nested)
     for source, target in spec.links:
         tree.links.new(_socket(nodes, source, "outputs"), _socket(nodes, target, "inputs"))
     _layout(tree, nodes, spec)
 
 
-def _new_node(tree, key, description, image):
+def _new_node(tree, key, description, image, nested):
     node = tree.nodes.new(description.type)
     node.name = key
     node.label = description.label
     if description.group:
-        node.node_tree = bpy.data.node_groups[description.group]
+        node.node_tree = nested[description.group]
     for prop, value in description.props.items():
         setattr(node, prop, image if value == BUMP_IMAGE else value)
     for socket_key, value in description.values.items():

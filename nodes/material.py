@@ -6,25 +6,28 @@ saved file renders with auto-run scripts off and without the add-on.
 
 import bpy
 
+from ..water.editable import check_editable
 from . import SPECS, water_surface
 from .builder import ensure_group
 from .bump_image import ensure_bump_image
+from .ownership import is_local
 
 WATER_NODE = "Water Surface"
 TIME_EXPRESSION = "frame / (fps / fps_base)"
 
 
 def water_group(image=None):
-    """The `Water Surface` group sampling `image`.
+    """The `Water Surface` group sampling `image` (default: the add-on's bump image).
 
     A shader group cannot take an image as an input, so a material with its own
-    normal map uses a group of its own, "Water Surface (<image>)", built from
-    the same description and reused for every material with that image.
+    normal map uses a group of its own, named "Water Surface (<image>)", built
+    from the same description and reused for every material with that image.
+    It is found by the image it samples, so renaming the image changes nothing.
     """
     default = ensure_bump_image()
     if image is None or image == default:
         return ensure_group(SPECS[water_surface.NAME], SPECS, image=default)
-    if image.colorspace_settings.name != "Non-Color":
+    if image.colorspace_settings.name != "Non-Color" and is_local(image):
         image.colorspace_settings.name = "Non-Color"
     return ensure_group(
         SPECS[water_surface.NAME], SPECS, name=f"{water_surface.NAME} ({image.name})", image=image
@@ -87,6 +90,7 @@ def bump_image(material):
 
 def set_bump_image(material, image):
     """Makes the material sample `image` (None: the default bump); its values stay as they were."""
+    check_editable(material)
     water_node(material).node_tree = water_group(image)
 
 

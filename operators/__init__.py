@@ -10,6 +10,7 @@ from .preset_ops import (
     OBJECT_OT_water_surface_preset_apply,
     OBJECT_OT_water_surface_preset_remove,
 )
+from .repair_ops import OBJECT_OT_water_surface_repair
 from .waves_ops import OBJECT_OT_water_waves_add
 
 classes = (
@@ -21,6 +22,7 @@ classes = (
     OBJECT_OT_water_surface_sun_set,
     OBJECT_OT_water_surface_bump_set,
     OBJECT_OT_water_waves_add,
+    OBJECT_OT_water_surface_repair,
 )
 
 _register_classes, _unregister_classes = bpy.utils.register_classes_factory(classes)

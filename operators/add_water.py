@@ -5,8 +5,7 @@ from bpy_extras import object_utils
 
 from .. import presets
 from ..presets import schema
-from ..water import mirror
-from ..water.plane import dress_water, max_resolution, new_water_mesh
+from ..water.plane import AddWaterError, add_water
 from ._props import field_property
 
 KEYS = tuple(field.key for field in schema.FIELDS)
@@ -64,6 +63,12 @@ class OBJECT_OT_water_surface_add(object_utils.AddObjectHelper, bpy.types.Operat
     )
     ran: bpy.props.BoolProperty(options={"HIDDEN", "SKIP_SAVE"})
 
+    @classmethod
+    def poll(cls, context):
+        from ._poll import scene_editable
+
+        return scene_editable(cls, context)
+
     def draw(self, _context):
         layout = self.layout
         layout.use_property_split = True
@@ -86,20 +91,8 @@ class OBJECT_OT_water_surface_add(object_utils.AddObjectHelper, bpy.types.Operat
         except presets.PresetError as error:
             self.report({"ERROR"}, str(error))
             return {"CANCELLED"}
-        # Values not given take the preset's; then all are clamped and shown as used.
-        values = {
-            key: self._given(key) if self.properties.is_property_set(key) else preset.values[key]
-            for key in KEYS
-        }
-        values = schema.clamp_values(values)
-        if values["resolution"] > max_resolution():
-            values["resolution"] = max_resolution()
-            self.report(
-                {"WARNING"}, f"Resolution lowered to {values['resolution']}: the free memory holds no more"
-            )
-        for key, value in values.items():
-            setattr(self, key, value)
-        self.ran = True
+        # Values not given take the preset's; the pipeline clamps them, and they are shown as used.
+        given = {key: self._given(key) for key in KEYS if self.properties.is_property_set(key)}
 
         if context.mode != "OBJECT":
             if not bpy.ops.object.mode_set.poll():
@@ -110,14 +103,27 @@ class OBJECT_OT_water_surface_add(object_utils.AddObjectHelper, bpy.types.Operat
             bpy.ops.object.mode_set(mode="OBJECT")
             self.report({"INFO"}, "Switched to Object Mode to add the water")
 
-        mesh = new_water_mesh("Water", values["size"], values["resolution"])
-        obj = object_utils.object_data_add(context, mesh, operator=self)
-        material = dress_water(obj, context.scene, values)
-        message = f"Added '{obj.name}' ({preset.name}, {values['size']:g} m) with material '{material.name}'"
-        if self.mirror_setup and values["shading"] == "ocean":
-            message += "; the ocean reflects the world's sky, no mirror set-up needed"
-        elif self.mirror_setup:
-            changes = mirror.setup_mirror(context.scene, obj)
-            message += "; mirror set-up: " + ", ".join(changes)
-        self.report({"INFO"}, message)
+        try:
+            added = add_water(
+                context.scene,
+                preset=preset.id,
+                collection=context.collection,
+                mirror_setup=self.mirror_setup,
+                matrix=object_utils.add_object_align_init(context, self),
+                **given,
+            )
+        except (presets.PresetError, AddWaterError) as error:
+            self.report({"ERROR"}, str(error))
+            return {"CANCELLED"}
+        for key, value in added.values.items():
+            setattr(self, key, value)
+        self.ran = True
+        for obj in context.view_layer.objects.selected:
+            obj.select_set(False)
+        added.object.select_set(True)
+        context.view_layer.objects.active = added.object
+        for note in added.notes:
+            self.report({"WARNING"}, note[0].upper() + note[1:])
+        summary = added.summary(preset.name)
+        self.report({"INFO"}, summary[0].upper() + summary[1:])
         return {"FINISHED"}

@@ -3,9 +3,12 @@
 import bpy
 
 from ..nodes.bump_image import IMAGE_NAME as BUMP_IMAGE_NAME
+from ..nodes.bump_image import is_bump_image
 from ..nodes.material import drive_sun, glint_sun, set_bump_image, water_node
 from ..water import sun_link
+from ..water.editable import NotEditableError, check_editable
 from ..water.values import water_material
+from . import _poll
 
 _items = {}  # kept alive for Blender's dynamic enums
 
@@ -22,7 +25,7 @@ def _image_items(_self, _context):
     _items["image"] = [("DEFAULT", BUMP_IMAGE_NAME, "The add-on's packed water normal map", "IMAGE", 0)] + [
         (image.name, image.name, f"Use '{image.name}' as the normal map", "IMAGE_DATA", i + 1)
         for i, image in enumerate(bpy.data.images)
-        if image.type not in {"RENDER_RESULT", "COMPOSITING"} and image.name != BUMP_IMAGE_NAME
+        if image.type not in {"RENDER_RESULT", "COMPOSITING"} and not is_bump_image(image)
     ]
     return _items["image"]
 
@@ -31,6 +34,10 @@ class _LakeChoice:
     """A searchable choice applied to the active object's lake material."""
 
     bl_options = {"REGISTER", "UNDO"}
+
+    @classmethod
+    def poll(cls, context):
+        return _poll.lake_water(cls, context, "this choice is for lake water")
 
     def invoke(self, context, _event):
         context.window_manager.invoke_search_popup(self)
@@ -42,7 +49,11 @@ class _LakeChoice:
             what = "has ocean shading" if material is not None else "is not water"
             self.report({"ERROR"}, f"The active object {what}: this choice is for lake water")
             return {"CANCELLED"}
-        self.report({"INFO"}, self.choose(context, material))
+        try:
+            self.report({"INFO"}, self.choose(context, material))
+        except NotEditableError as error:
+            self.report({"ERROR"}, str(error))
+            return {"CANCELLED"}
         return {"FINISHED"}
 
 
@@ -57,6 +68,7 @@ class OBJECT_OT_water_surface_sun_set(_LakeChoice, bpy.types.Operator):
 
     def choose(self, context, material):
         sun = None if self.sun == "NONE" else context.scene.objects.get(self.sun)
+        check_editable(sun)  # a linked sun's light linking cannot be set: refused, nothing changed
         previous = glint_sun(material)
         drive_sun(material, sun)
         if previous is not None and previous != sun:

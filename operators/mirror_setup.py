@@ -3,7 +3,8 @@
 import bpy
 
 from ..water import mirror
-from ..water.values import is_water
+from ..water.values import is_water, water_material
+from . import _poll
 
 
 class OBJECT_OT_water_mirror_setup(bpy.types.Operator):
@@ -14,6 +15,10 @@ class OBJECT_OT_water_mirror_setup(bpy.types.Operator):
     bl_label = "Set Up Mirror"
     bl_options = {"REGISTER", "UNDO"}
 
+    @classmethod
+    def poll(cls, context):
+        return _poll.selected_water(cls, context)
+
     def execute(self, context):
         selected = list(context.selected_objects)
         if context.active_object is not None and context.active_object not in selected:
@@ -23,6 +28,15 @@ class OBJECT_OT_water_mirror_setup(bpy.types.Operator):
             self.report({"ERROR"}, "Select a water object (one with a Water Surface material) first")
             return {"CANCELLED"}
         for water in waters:
-            changes = mirror.setup_mirror(context.scene, water)
-            self.report({"INFO"}, f"Mirror set-up for '{water.name}': " + ", ".join(changes))
+            try:
+                changes = mirror.setup_mirror(context.scene, water)
+            except ValueError as error:  # needs repair, or linked data: one line, nothing changed
+                self.report({"ERROR"}, str(error))
+                return {"CANCELLED"}
+            if not mirror.needs_mirror(water_material(water)):
+                what = "has ocean shading: it reflects the world's sky and needs no mirror set-up"
+                self.report({"INFO"}, f"'{water.name}' {what}")
+            else:
+                done = ", ".join(changes) or "already set up, nothing changed"
+                self.report({"INFO"}, f"Mirror set-up for '{water.name}': {done}")
         return {"FINISHED"}

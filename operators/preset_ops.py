@@ -26,6 +26,12 @@ class OBJECT_OT_water_surface_preset_apply(bpy.types.Operator):
 
     preset: bpy.props.EnumProperty(name="Preset", items=presets.enum_items)
 
+    @classmethod
+    def poll(cls, context):
+        from ._poll import lake_water
+
+        return lake_water(cls, context, "presets hold lake water values (edit it in the panel)")
+
     def execute(self, context):
         material = _active_water(self, context)
         if material is None:
@@ -46,6 +52,20 @@ class OBJECT_OT_water_surface_preset_add(bpy.types.Operator):
     bl_label = "Save Water Preset"
 
     name: bpy.props.StringProperty(name="Name", description="Name of the new preset", default="My Water")
+    # SKIP_SAVE: a tick from an earlier save must not silently replace the next clash.
+    replace: bpy.props.BoolProperty(
+        name="Replace Existing",
+        description="Overwrite your preset of the same name (unticked, a name clash is refused)",
+        default=False,
+        options={"SKIP_SAVE"},
+    )
+
+    @classmethod
+    def poll(cls, context):
+        # Saving reads the values only: linked water may be saved as a preset.
+        from ._poll import lake_water
+
+        return lake_water(cls, context, "presets hold lake water values", editable=False)
 
     def invoke(self, context, _event):
         return context.window_manager.invoke_props_dialog(self)
@@ -55,7 +75,13 @@ class OBJECT_OT_water_surface_preset_add(bpy.types.Operator):
         if material is None:
             return {"CANCELLED"}
         try:
-            preset_id = presets.save_user_preset(self.name, read_values(material))
+            preset_id = presets.save_user_preset(self.name, read_values(material), overwrite=self.replace)
+        except presets.PresetExistsError:
+            self.report(
+                {"ERROR"},
+                f"A preset named '{self.name}' already exists: tick Replace Existing or pick another name",
+            )
+            return {"CANCELLED"}
         except (presets.PresetError, OSError) as error:
             self.report({"ERROR"}, f"Cannot save preset '{self.name}': {error}")
             return {"CANCELLED"}
@@ -70,6 +96,13 @@ class OBJECT_OT_water_surface_preset_remove(bpy.types.Operator):
     bl_label = "Remove Water Preset"
 
     preset: bpy.props.EnumProperty(name="Preset", items=presets.enum_items)
+
+    @classmethod
+    def poll(cls, _context):
+        if any(preset.user for preset in presets.all_presets()):
+            return True
+        cls.poll_message_set("There is no user preset to remove: presets built in cannot be removed")
+        return False
 
     def invoke(self, context, _event):
         return context.window_manager.invoke_props_dialog(self)

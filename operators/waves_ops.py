@@ -4,6 +4,7 @@ import bpy
 
 from ..water import mirror, waves
 from ..water.values import is_water
+from . import _poll
 
 
 class OBJECT_OT_water_waves_add(bpy.types.Operator):
@@ -12,6 +13,10 @@ class OBJECT_OT_water_waves_add(bpy.types.Operator):
     bl_idname = "object.water_waves_add"
     bl_label = "Add Waves"
     bl_options = {"REGISTER", "UNDO"}
+
+    @classmethod
+    def poll(cls, context):
+        return _poll.any_water(cls, context)
 
     def execute(self, context):
         obj = context.active_object

@@ -11,6 +11,7 @@ import bpy
 
 from . import schema, store
 from .schema import PresetError
+from .store import PresetExistsError
 
 ADDON_PACKAGE = __package__.rpartition(".")[0]
 
@@ -72,9 +73,13 @@ def enum_items(_self=None, _context=None):
     return _enum_items
 
 
-def save_user_preset(name, values):
-    """Writes a user preset and reloads; returns its id."""
-    path = store.write_preset(user_dir(), name, values)
+def save_user_preset(name, values, overwrite=False):
+    """Writes a user preset and reloads; returns its id.
+
+    An existing preset of that name is replaced only with `overwrite`
+    (store.PresetExistsError otherwise), so a user's preset is never lost unasked.
+    """
+    path = store.write_preset(user_dir(), name, values, overwrite=overwrite)
     reload()
     return store.USER_PREFIX + path.stem
 
@@ -88,7 +93,17 @@ def remove_user_preset(preset_id):
     reload()
 
 
-__all__ = ("PresetError", "schema", "store", "user_dir", "reload", "all_presets", "get", "enum_items")
+__all__ = (
+    "PresetError",
+    "PresetExistsError",
+    "schema",
+    "store",
+    "user_dir",
+    "reload",
+    "all_presets",
+    "get",
+    "enum_items",
+)
 
 
 def register():

@@ -111,12 +111,6 @@ def test_newer_group_is_left_as_it_is(scene):
     assert "from a newer add-on" in tree.nodes and len(bpy.data.node_groups) == count
 
 
-def test_name_taken_by_another_tree_type_is_a_clear_error(scene):
-    bpy.data.node_groups.new("Water Surface", "GeometryNodeTree")
-    with pytest.raises(RuntimeError, match="'Water Surface'.*GeometryNodeTree"):
-        _material().water_group()
-
-
 def test_half_built_group_is_removed_and_named_in_the_error(scene):
     spec_module = harness.addon("nodes.spec")
     broken = spec_module.GroupSpec(

@@ -10,9 +10,11 @@ from ..nodes.material import bump_image, glint_sun, water_node
 from ..nodes.ocean_material import ocean_nodes
 from ..nodes.water_surface import DEBUG_VIEWS
 from ..nodes.water_waves import WAVE_COUNT
+from ..water.editable import why_not_editable
 from ..water.mirror import find_probe
+from ..water.repair import needs_repair
 from ..water.values import water_material
-from ..water.waves import input_property, wave_modifier
+from ..water.waves import input_ids, input_property, wave_modifier
 
 # The ocean shading's inputs the panel shows: (which group node, input name).
 _OCEAN_INPUTS = (
@@ -63,6 +65,16 @@ class VIEW3D_PT_water_surface(bpy.types.Panel):
             return
         node = water_node(material)
         layout.label(text=f"Material: {material.name}", icon="MATERIAL")
+        why = why_not_editable(context.active_object, material)
+        if why is not None:
+            layout.label(text=why, icon="LIBRARY_DATA_DIRECT")
+        problem = needs_repair(material)
+        if problem is not None:
+            # A replaced group, or one missing sockets: no input is drawn, only the way back.
+            layout.label(text=problem, icon="ERROR")
+            layout.operator("object.water_surface_repair", icon="TOOL_SETTINGS")
+            self.draw_waves(layout, context.active_object)
+            return
         if node is None:
             self.draw_ocean(layout, material)
             self.draw_waves(layout, context.active_object)
@@ -133,6 +145,16 @@ class VIEW3D_PT_water_surface(bpy.types.Panel):
             box.operator("object.water_waves_add", icon="MOD_WAVE")
             return
         box.label(text="Waves", icon="MOD_WAVE")
+        names = input_ids(modifier)
+        missing = [
+            f"{name} {number}"
+            for number in range(1, WAVE_COUNT + 1)
+            for name in ("Amplitude", "Wavelength", "Speed", "Direction")
+            if f"{name} {number}" not in names
+        ]
+        if missing:
+            box.label(text=f"Group '{modifier.node_group.name}' lacks '{missing[0]}'", icon="ERROR")
+            return
         box.use_property_split = True
         for number in range(1, WAVE_COUNT + 1):
             col = box.column(align=True)

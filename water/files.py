@@ -2,15 +2,49 @@
 
 Used by the command line (`blender -c water_surface ...`) and callable from any
 `bpy` script. Errors are `FileJobError` with one line that says what to fix.
+
+Each job opens its `.blend` in place of the caller's open file; with
+`keep_session=True` (the default) the caller's session is put back afterwards,
+also when the job fails. The session is saved as a copy in a temporary folder
+just before the job opens its file, and reopened afterwards, so it comes back
+with its unsaved changes. What is and is not the same afterwards:
+
+* the same: everything a `.blend` holds - objects, meshes, materials, scenes,
+  the current frame, the active scene and object, selection - including changes
+  that were never saved;
+* reopened from the copy (whenever Blender cannot vouch that the saved file
+  equals the session: it had never been saved, it has unsaved changes, the file
+  on disk changed during the job, or Blender runs in the background, where
+  `bpy.data.is_dirty` misses changes made by scripts): `bpy.data.filepath` is
+  the copy's path (`<temp>/<name>.blend`, or `untitled.blend` for a session that
+  was never saved; the copy is deleted), not the session's own, so save with
+  `bpy.ops.wm.save_as_mainfile(filepath=...)`; `bpy.data.is_dirty` may differ;
+  relative (`//`) file paths of images, libraries, sounds, ... are remapped to
+  stay valid, but other `//` paths (a scene's render output) then resolve against
+  the temporary folder;
+* a saved session with no unsaved changes, in Blender's interface, is reopened
+  from its own file: `bpy.data.filepath` stays the same;
+* never the same: Python references to data-blocks taken before the job (look
+  them up again by name), the undo history, data-blocks with no users (dropped,
+  as on every save), unsaved pixels of images that are not packed, and
+  `load_post` handlers run once more. In Blender's interface, the job's and the
+  copy's paths may appear among the recent files.
+
+The command line passes `keep_session=False`: its session is thrown away.
 """
 
+import functools
+import inspect
+import os
 import re
+import shutil
+import tempfile
 from pathlib import Path
 
 import bpy
 
 from ..presets import PresetError
-from .plane import add_water, resolve_values
+from .plane import AddWaterError, add_water, resolve_values
 
 IMAGE_FORMATS = {".png": "PNG", ".exr": "OPEN_EXR", ".jpg": "JPEG", ".jpeg": "JPEG", ".tif": "TIFF"}
 
@@ -23,6 +57,8 @@ def _open(path):
     path = Path(path)
     if not path.is_file():
         raise FileJobError(f"no such .blend file: {path}")
+    if _kept is not None:
+        _kept.take()
     try:
         bpy.ops.wm.open_mainfile(filepath=str(path.resolve()), load_ui=False)
     except RuntimeError as error:
@@ -38,16 +74,121 @@ def _scene(name):
     return scene
 
 
+def _can_write(path, mode=os.W_OK):
+    if os.access in os.supports_effective_ids:  # what open() checks, also under seteuid
+        return os.access(path, mode, effective_ids=True)
+    return os.access(path, mode)
+
+
 def _output_folder(path):
+    """`path` resolved, once its folder exists and may be written in; FileJobError if not."""
     path = Path(path)
     if not path.parent.is_dir():
         raise FileJobError(f"folder does not exist: {path.parent}")
+    if not _can_write(path.parent, os.W_OK | os.X_OK):
+        raise FileJobError(f"cannot write in folder {path.parent} (no permission)")
     return path.resolve()
 
 
-def add_water_to_file(source, target, scene=None, preset="lake", mirror_setup=True, **values):
-    """Opens `source`, adds water to its scene, saves as `target`; returns what it did, in words."""
-    target = _output_folder(target)
+def _output_file(path):
+    """FileJobError when `path` (in a checked folder) is a folder or a file that may not be written."""
+    if path.is_dir():
+        raise FileJobError(f"the output is a folder, not a file: {path}")
+    if path.exists() and not _can_write(path):
+        raise FileJobError(f"cannot write over {path} (it is read-only)")
+    return path
+
+
+def _last_line(error, default):
+    text = str(error).strip()
+    return text.splitlines()[-1] if text else default
+
+
+class _KeptSession:
+    """The caller's open file while a job runs: `take` saves a copy before the job opens
+    its own file, `restore` reopens the session afterwards (see the module's notes)."""
+
+    def __init__(self):
+        self.folder = None
+        self.copy = None
+
+    def take(self):
+        if self.copy is not None:
+            return
+        self.path = bpy.data.filepath
+        self.clean = bool(self.path) and not bpy.data.is_dirty and not bpy.app.background
+        self.stat = _stat(self.path)
+        folder = Path(tempfile.mkdtemp(prefix="water_surface_session_"))
+        copy = folder / (Path(self.path).name if self.path else "untitled.blend")
+        try:
+            bpy.ops.wm.save_as_mainfile(filepath=str(copy), copy=True, relative_remap=True)
+        except RuntimeError as error:
+            shutil.rmtree(folder, ignore_errors=True)
+            reason = _last_line(error, "saving failed")
+            raise FileJobError(
+                f"cannot keep a copy of the open file, so the job did not run: {reason}"
+            ) from error
+        self.folder, self.copy = folder, copy
+
+    def restore(self):
+        if self.copy is None:
+            return
+        own = self.clean and self.stat is not None and _stat(self.path) == self.stat
+        for path in [self.path, self.copy] if own else [self.copy]:
+            try:
+                bpy.ops.wm.open_mainfile(filepath=str(path), load_ui=False)
+            except RuntimeError as error:
+                reason = _last_line(error, "opening failed")
+                continue
+            shutil.rmtree(self.folder, ignore_errors=True)
+            return
+        raise FileJobError(f"cannot reopen the open file from its copy {self.copy}: {reason}")
+
+
+def _stat(path):
+    try:
+        stat = os.stat(path)
+    except (OSError, ValueError):
+        return None
+    return stat.st_mtime_ns, stat.st_size
+
+
+_kept = None  # the _KeptSession of the job running now, if it keeps the caller's session
+
+
+def _keeps_session(job):
+    """Runs `job` so that, with its `keep_session` true, the caller's session comes back after it."""
+    signature = inspect.signature(job)
+
+    @functools.wraps(job)
+    def run(*args, **kwargs):
+        global _kept
+        try:
+            keep = signature.bind(*args, **kwargs).arguments.get("keep_session", True)
+        except TypeError:
+            keep = False  # the job itself raises its TypeError before opening anything
+        outer, _kept = _kept, _KeptSession() if keep else None
+        try:
+            return job(*args, **kwargs)
+        finally:
+            kept, _kept = _kept, outer
+            if kept is not None:
+                kept.restore()
+
+    return run
+
+
+@_keeps_session
+def add_water_to_file(
+    source, target, scene=None, preset="lake", mirror_setup=True, keep_session=True, **values
+):
+    """Opens `source`, adds water to its scene, saves as `target`; returns what it did, in words.
+
+    `target` may be `source`. Nothing is opened when `target` cannot be written (a folder,
+    a read-only file, a missing or read-only folder). `keep_session`: put the caller's open
+    file back afterwards (see the module's notes).
+    """
+    target = _output_file(_output_folder(target))
     if target.suffix != ".blend":
         raise FileJobError(f"the output must be a .blend file, not {target.name}")
     try:
@@ -57,14 +198,15 @@ def add_water_to_file(source, target, scene=None, preset="lake", mirror_setup=Tr
     _open(source)
     scene = _scene(scene)
     try:
-        water, changes = add_water(scene, preset=preset, mirror_setup=mirror_setup, **values)
-    except PresetError as error:
+        added = add_water(scene, preset=preset, mirror_setup=mirror_setup, **values)
+    except (PresetError, AddWaterError) as error:
         raise FileJobError(str(error)) from error
-    bpy.ops.wm.save_as_mainfile(filepath=str(target))
-    done = f"added '{water.name}' ({preset}, {water.dimensions.x:g} m) to scene '{scene.name}'"
-    if changes:
-        done += "; mirror set-up: " + ", ".join(changes)
-    return f"{done}; saved {target}"
+    try:
+        bpy.ops.wm.save_as_mainfile(filepath=str(target))
+    except RuntimeError as error:
+        raise FileJobError(f"cannot save {target}: {_last_line(error, 'saving failed')}") from error
+    notes = "".join(f"; {note}" for note in added.notes)
+    return f"{added.summary(preset)} to scene '{scene.name}'{notes}; saved {target}"
 
 
 def frame_path(target, frame):
@@ -96,13 +238,19 @@ def parse_frames(text):
 MIN_FRAME, MAX_FRAME = -1048574, 1048574  # Blender's MINAFRAME and MAXFRAME
 
 
-def render_file(source, target, scene=None, frame=None, samples=None, frames=None, progress=print):
+@_keeps_session
+def render_file(
+    source, target, scene=None, frame=None, samples=None, frames=None, progress=print, keep_session=True
+):
     """Opens `source` and renders frames of its scene to `target` (.png, .exr, .jpg, .tif).
 
     `frames`, a list of frame numbers, renders each to `frame_path(target, n)`, one
     `progress` line a frame, as a farm worker would (each frame from the file's own
     state: nothing carries over from the frame before). Otherwise one frame
     (`frame`, default the file's current one) is written to `target` as named.
+    Nothing is opened or rendered when an output cannot be written (a folder, a
+    read-only file, a missing or read-only folder). `keep_session`: put the caller's
+    open file back afterwards (see the module's notes).
     """
     target = _output_folder(target)
     file_format = IMAGE_FORMATS.get(target.suffix.lower())
@@ -113,6 +261,8 @@ def render_file(source, target, scene=None, frame=None, samples=None, frames=Non
     for number in frames or ([frame] if frame is not None else []):
         if not MIN_FRAME <= number <= MAX_FRAME:
             raise FileJobError(f"frame {number} is outside Blender's range {MIN_FRAME}..{MAX_FRAME}")
+    for path in [frame_path(target, number) for number in frames] if frames else [target]:
+        _output_file(path)
     _open(source)
     scene = _scene(scene)
     if scene.camera is None:

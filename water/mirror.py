@@ -19,13 +19,17 @@ import numpy as np
 
 from ..engine import eevee_engine_id, enable_ray_tracing
 from ..nodes.material import glint_sun, water_node
+from ..nodes.ownership import is_local, mark, owned
 from . import sun_link
+from .editable import check_editable
+from .repair import needs_repair
 from .values import water_material
 from .waves import amplitude_sum, wave_modifier
 
 PROBE_TAG = "water_surface_mirror"  # custom property naming the water a probe mirrors
 PROBE_LIFT = 0.01  # metres above the water
 SKY_COLOR = (0.45, 0.6, 0.85)
+SKY_NAME = "Sky"
 
 _SETTING_NAMES = {
     "use_raytracing": "EEVEE ray tracing on",
@@ -38,12 +42,32 @@ class MirrorSetupError(ValueError):
     """The mirror set-up cannot run on what it was given."""
 
 
+def _is_mirror_probe(obj):
+    return (
+        obj.get(PROBE_TAG) is not None
+        and obj.type == "LIGHT_PROBE"
+        and obj.data is not None
+        and obj.data.type == "PLANE"
+        and is_local(obj)
+    )
+
+
 def find_probe(water):
-    """The planar probe made for `water`, or None."""
-    for child in water.children:
-        if child.get(PROBE_TAG) is not None and child.type == "LIGHT_PROBE" and child.data.type == "PLANE":
-            return child
-    return None
+    """The planar probe made for `water`, or None: its child, or one the user unparented or
+    parented elsewhere (tagged with the water's name)."""
+    children = [child for child in water.children if _is_mirror_probe(child)]
+    if children:
+        return children[0]
+    return next(
+        (o for o in bpy.data.objects if _is_mirror_probe(o) and o[PROBE_TAG] == water.name),
+        None,
+    )
+
+
+def needs_mirror(material):
+    """The one rule for which water gets the mirror set-up: lake shading does; the ocean
+    shading reflects the world's sky and needs none."""
+    return water_node(material) is not None
 
 
 def rest_bounds(water):
@@ -87,8 +111,21 @@ def fit_probe(water):
     return changes
 
 
+def _orphan_probe_data(water):
+    """Probe data the add-on made for `water` whose object was deleted, to reuse."""
+    return next(
+        (
+            d
+            for d in bpy.data.lightprobes
+            if d.users == 0 and d.get(PROBE_TAG) == water.name and d.type == "PLANE" and is_local(d)
+        ),
+        None,
+    )
+
+
 def _add_probe(scene, water):
-    data = bpy.data.lightprobes.new(f"{water.name} Mirror", "PLANE")
+    data = _orphan_probe_data(water) or bpy.data.lightprobes.new(f"{water.name} Mirror", "PLANE")
+    data[PROBE_TAG] = water.name
     data.influence_distance = max(data.influence_distance, 4 * PROBE_LIFT)
     probe = bpy.data.objects.new(f"{water.name} Mirror", data)
     probe[PROBE_TAG] = water.name
@@ -98,41 +135,72 @@ def _add_probe(scene, water):
     return probe
 
 
+def _keep_probe(probe, water):
+    """Re-attaches a probe the user unparented, and follows a renamed water; returns what changed."""
+    changes = []
+    if probe.parent != water:
+        probe.parent = water
+        changes.append(f"planar probe '{probe.name}' parented to '{water.name}' again")
+    if probe[PROBE_TAG] != water.name:
+        probe[PROBE_TAG] = water.name
+        probe.data[PROBE_TAG] = water.name
+    return changes
+
+
+def sky_world():
+    """The add-on's sky world, made once and reused by every scene that has none."""
+    found = owned(bpy.data.worlds, SKY_NAME)
+    if found:
+        return found[0], False
+    world = bpy.data.worlds.new(SKY_NAME)
+    if bpy.app.version < (5, 0, 0):
+        world.use_nodes = True
+    background = world.node_tree.nodes.get("Background") if world.node_tree else None
+    if background is not None:
+        background.inputs["Color"].default_value = (*SKY_COLOR, 1.0)
+    else:
+        world.color = SKY_COLOR
+    mark(world, SKY_NAME, 1)
+    return world, True
+
+
 def setup_mirror(scene, water):
     """Sets `scene` and `water` up for a true mirror; returns what it changed, in words.
 
     Runs again safely: the probe is reused and only settings that differ are changed.
+    Ocean shading needs no mirror (`needs_mirror`): nothing is changed for it.
     """
     material = water_material(water)
     if material is None:
         raise MirrorSetupError(
             f"'{getattr(water, 'name', water)}' is not a water object (no Water Surface material)"
         )
+    check_editable(scene, water, material)
+    problem = needs_repair(material)
+    if problem:
+        raise MirrorSetupError(problem)
+    if not needs_mirror(material):
+        return []
     changes = []
     if scene.render.engine == "BLENDER_WORKBENCH":
         scene.render.engine = eevee_engine_id()
         changes.append("render engine set to EEVEE")
     changes += [_SETTING_NAMES[name] for name in enable_ray_tracing(scene)]
-    if water_node(material) is not None and not material.use_raytrace_refraction:
+    if not material.use_raytrace_refraction:
         material.use_raytrace_refraction = True
         changes.append(f"ray-traced refraction on for '{material.name}'")
     if scene.world is None:
-        world = bpy.data.worlds.new("Sky")
-        if bpy.app.version < (5, 0, 0):
-            world.use_nodes = True
-        background = world.node_tree.nodes.get("Background")
-        if background is not None:
-            background.inputs["Color"].default_value = (*SKY_COLOR, 1.0)
-        else:
-            world.color = SKY_COLOR
+        world, made = sky_world()
         scene.world = world
-        changes.append(f"added world '{world.name}'")
+        changes.append(f"{'added' if made else 'set the'} world '{world.name}'")
     if not water.hide_probe_plane:
         water.hide_probe_plane = True
         changes.append(f"'{water.name}' hidden from planar captures")
-    if find_probe(water) is None:
+    probe = find_probe(water)
+    if probe is None:
         changes.append(f"added planar probe '{_add_probe(scene, water).name}'")
+    else:
+        changes += _keep_probe(probe, water)
     changes += fit_probe(water)
-    if water_node(material) is not None:
-        changes += sun_link.exclude_water(water, glint_sun(material))
+    changes += sun_link.exclude_water(water, glint_sun(material))
     return changes

@@ -1,5 +1,7 @@
 """A water plane: a grid with UVs, its own water material, and optionally waves."""
 
+from dataclasses import dataclass, field
+
 import bpy
 import numpy as np
 from mathutils import Euler, Matrix, Vector
@@ -9,6 +11,7 @@ from ..nodes.material import make_water_material
 from ..nodes.ocean_material import make_ocean_material
 from ..presets import schema
 from . import mirror, waves
+from .editable import check_editable
 from .values import write_values
 
 BYTES_PER_VERTEX = 400  # mesh, wave attribute and evaluated copy, measured with margin
@@ -51,6 +54,7 @@ def new_water_mesh(name, size, resolution=2):
 
 def dress_water(obj, scene, values):
     """Gives `obj` a new material (lake or ocean shading) set to `values`, and the waves if asked."""
+    check_editable(obj, obj.data)
     if values.get("shading", "lake") == "ocean":
         material = make_ocean_material(name=obj.name, scene=scene)
     else:
@@ -76,6 +80,32 @@ def resolve_values(preset="lake", **overrides):
     return schema.clamp_values(values)
 
 
+@dataclass
+class AddedWater:
+    """What `add_water` made: the object, its material, the values used, and in words
+    what the mirror set-up changed (`changes`) and what was adjusted (`notes`)."""
+
+    object: bpy.types.Object
+    material: bpy.types.Material
+    values: dict
+    changes: list = field(default_factory=list)
+    notes: list = field(default_factory=list)
+
+    def summary(self, preset_name):
+        """One line for a report or the command line."""
+        text = f"added '{self.object.name}' ({preset_name}, {self.values['size']:g} m)"
+        text += f" with material '{self.material.name}'"
+        if self.values["shading"] == "ocean":
+            text += "; the ocean reflects the world's sky, no mirror set-up needed"
+        elif self.changes:
+            text += "; mirror set-up: " + ", ".join(self.changes)
+        return text
+
+
+class AddWaterError(RuntimeError):
+    """Adding water failed; nothing it made is left behind."""
+
+
 def add_water(
     scene=None,
     preset="lake",
@@ -84,21 +114,55 @@ def add_water(
     collection=None,
     mirror_setup=True,
     name="Water",
+    matrix=None,
     **overrides,
 ):
-    """Adds a water plane to `scene` (default: the context's) and returns (object, changes).
+    """Adds a water plane to `scene` (default: the context's); the one way water is added.
 
     `overrides` are preset keys (`size`, `wave_height`, `resolution`, `waves`,
     `shading`, ...) that replace the preset's values; every value is clamped
-    into range. `changes` lists what the mirror set-up changed in the scene.
+    into range. `matrix` (a 4x4 world matrix) wins over `location` and `rotation`.
+    Atomic: on any failure everything it made is removed and `AddWaterError`
+    (one line) is raised; PresetError for an unknown preset or value.
     """
     scene = scene or bpy.context.scene
     values = resolve_values(preset, **overrides)
-    obj = bpy.data.objects.new(name, new_water_mesh(name, values["size"], values["resolution"]))
-    (collection or scene.collection).objects.link(obj)
-    obj.matrix_world = Matrix.LocRotScale(Vector(location), Euler(rotation), None)
-    dress_water(obj, scene, values)
-    changes = []
-    if mirror_setup and values["shading"] == "lake":
-        changes = mirror.setup_mirror(scene, obj)
-    return obj, changes
+    notes = []
+    if values["resolution"] > max_resolution():
+        values["resolution"] = max_resolution()
+        notes.append(f"resolution lowered to {values['resolution']}: the free memory holds no more")
+    before = _snapshot(scene)
+    try:
+        check_editable(scene, collection or scene.collection)
+        obj = bpy.data.objects.new(name, new_water_mesh(name, values["size"], values["resolution"]))
+        (collection or scene.collection).objects.link(obj)
+        if matrix is None:
+            matrix = Matrix.LocRotScale(Vector(location), Euler(rotation), None)
+        obj.matrix_world = matrix
+        material = dress_water(obj, scene, values)
+        changes = mirror.setup_mirror(scene, obj) if mirror_setup else []
+    except Exception as error:
+        _roll_back(scene, before)
+        message = str(error).strip().splitlines()[-1] if str(error).strip() else type(error).__name__
+        raise AddWaterError(f"adding water failed, nothing was added: {message}") from error
+    return AddedWater(obj, material, values, changes, notes)
+
+
+# What adding water can create; removed again, newest kinds first, when it fails.
+_KINDS = ("objects", "meshes", "materials", "node_groups", "images", "lightprobes", "worlds", "collections")
+
+
+def _snapshot(scene):
+    ids = {kind: {block.as_pointer() for block in getattr(bpy.data, kind)} for kind in _KINDS}
+    return ids, scene.world, scene.render.engine
+
+
+def _roll_back(scene, before):
+    """Removes every data-block made since `before` and puts the scene's world and engine back."""
+    ids, world, engine = before
+    for kind in _KINDS:
+        blocks = getattr(bpy.data, kind)
+        for block in [b for b in blocks if b.as_pointer() not in ids[kind]]:
+            blocks.remove(block)
+    scene.world = world
+    scene.render.engine = engine

@@ -10,7 +10,7 @@ it, so there the lamp's highlight stays (see the README for the figure).
 
 import bpy
 
-from ..nodes.builder import VERSION_KEY
+from ..nodes.ownership import is_local, mark
 
 OWNER_KEY = "water_surface_light_linking"  # marks a receiver collection the add-on made
 
@@ -47,7 +47,7 @@ def exclude_water(water, sun):
     if collection is None:
         collection = bpy.data.collections.new(f"Light Linking for {sun.name}")
         collection[OWNER_KEY] = True
-        collection[VERSION_KEY] = 1
+        mark(collection, "Light Linking", 1)
         linking.receiver_collection = collection
         changes.append(f"'{sun.name}' given the receiver collection '{collection.name}'")
     elif collection.library is not None:
@@ -67,7 +67,7 @@ def exclude_water(water, sun):
 
 def release_water(water, sun):
     """Undoes `exclude_water`: the water leaves the sun's receivers (an emptied one of ours goes)."""
-    if sun is None or sun.type != "LIGHT" or sun.library is not None:
+    if sun is None or sun.type != "LIGHT" or not is_local(sun):
         return
     collection = sun.light_linking.receiver_collection
     if collection is None or collection.library is not None or _entry(collection, water) is None:

@@ -20,20 +20,37 @@ def is_water(obj):
     return water_material(obj) is not None
 
 
+def _socket(node, field):
+    """The node's input for `field`, or None when its group lacks it (a water needing repair)."""
+    if node.node_tree is None:
+        return None
+    socket = node.inputs.get(field.socket)
+    return socket if socket is not None and hasattr(socket, "default_value") else None
+
+
 def read_values(material):
-    """The shader values of a lake material, keyed as in presets ({} for the ocean's)."""
+    """The shader values of a lake material, keyed as in presets ({} for the ocean's).
+
+    Inputs its group lacks, or holds with another type, are left out.
+    """
     node = water_node(material)
     values = {}
     if node is None:
         return values
     for field in schema.SHADER_FIELDS:
-        value = node.inputs[field.socket].default_value
-        if field.kind == "float":
-            values[field.key] = float(value)
-        elif field.kind == "int":
-            values[field.key] = int(value)
-        else:
-            values[field.key] = tuple(float(v) for v in value[: 2 if field.kind == "vec2" else 3])
+        socket = _socket(node, field)
+        if socket is None:
+            continue
+        value = socket.default_value
+        try:
+            if field.kind == "float":
+                values[field.key] = float(value)
+            elif field.kind == "int":
+                values[field.key] = int(value)
+            else:
+                values[field.key] = tuple(float(v) for v in value[: 2 if field.kind == "vec2" else 3])
+        except (TypeError, ValueError):
+            continue
     return values
 
 
@@ -41,18 +58,26 @@ def write_values(material, values):
     """Sets the shader values among `values` (preset keys), clamped first.
 
     The plane's keys are ignored, and so is an ocean material: its values live in its own groups.
+    Inputs the group lacks, or holds with another type, are skipped; returns the keys set.
     """
     node = water_node(material)
     if node is None:
-        return
+        return []
     shader_keys = {field.key for field in schema.SHADER_FIELDS}
     safe = schema.clamp_values({k: v for k, v in values.items() if k in shader_keys})
+    written = []
     for key, value in safe.items():
         field = schema.BY_KEY[key]
-        socket = node.inputs[field.socket]
+        socket = _socket(node, field)
+        if socket is None:
+            continue
         if field.kind == "vec2":
-            socket.default_value = (value[0], value[1], 0.0)
+            value = (value[0], value[1], 0.0)
         elif field.kind == "color":
-            socket.default_value = (*value, 1.0)
-        else:
+            value = (*value, 1.0)
+        try:
             socket.default_value = value
+        except (TypeError, ValueError):
+            continue
+        written.append(key)
+    return written

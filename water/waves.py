@@ -2,23 +2,29 @@
 
 from ..nodes import SPECS, water_waves
 from ..nodes.builder import ensure_group
+from ..nodes.ownership import role_of
+from .editable import check_editable
 
 MODIFIER = "Water Waves"
 
 
 def wave_modifier(obj):
-    """The object's Geometry Nodes modifier running `Water Waves`, or None."""
+    """The object's Geometry Nodes modifier running the add-on's `Water Waves` group, or None.
+
+    Found by the group's mark: a user's group named "Water Waves..." is theirs.
+    """
     if obj is None or obj.type != "MESH":
         return None
     for modifier in obj.modifiers:
         if modifier.type == "NODES" and modifier.node_group is not None:
-            if modifier.node_group.name.startswith(water_waves.NAME):
+            if role_of(modifier.node_group) == water_waves.NAME:
                 return modifier
     return None
 
 
 def add_waves(obj):
     """Adds (or reuses) the wave modifier on `obj`; returns it."""
+    check_editable(obj)
     modifier = wave_modifier(obj)
     if modifier is None:
         modifier = obj.modifiers.new(MODIFIER, "NODES")

@@ -1,0 +1,134 @@
+"""Water Surface's Python API: the public surface for scripts, pipelines and pytest.
+
+The operators, the panel and the command line call these same functions, so a
+script gets the same water as a click. Import it through the add-on's module,
+whatever extension repository it was installed into::
+
+    import importlib, addon_utils
+    name = next(m.__name__ for m in addon_utils.modules() if m.__name__.rpartition(".")[2] == "water_surface")
+    water_api = importlib.import_module(name + ".api")
+    added = water_api.add_water(preset="windy_river", size=40)
+
+Bad input raises PresetError, AddWaterError, MirrorSetupError, NotEditableError
+(linked or overridden data, never edited) or FileJobError, each with a one-line
+message; nothing is left half made.
+"""
+
+from __future__ import annotations
+
+import bpy
+
+from . import presets as _presets
+from .presets import PresetError
+from .water import files as _files
+from .water import mirror as _mirror
+from .water import values as _values
+from .water import waves as _waves
+from .water.editable import NotEditableError, check_editable
+from .water.files import FileJobError
+from .water.mirror import MirrorSetupError
+from .water.plane import AddedWater, AddWaterError
+from .water.plane import add_water as _add_water
+from .water.repair import needs_repair
+
+__all__ = (
+    "AddWaterError",
+    "AddedWater",
+    "FileJobError",
+    "MirrorSetupError",
+    "NotEditableError",
+    "PresetError",
+    "add_water",
+    "add_water_to_file",
+    "add_waves",
+    "apply_preset",
+    "is_water",
+    "preset_ids",
+    "read_values",
+    "render_file",
+    "setup_mirror",
+    "write_values",
+)
+
+
+def add_water(
+    scene: bpy.types.Scene | None = None,
+    preset: str = "lake",
+    location: tuple[float, float, float] = (0.0, 0.0, 0.0),
+    rotation: tuple[float, float, float] = (0.0, 0.0, 0.0),
+    collection: bpy.types.Collection | None = None,
+    mirror_setup: bool = True,
+    name: str = "Water",
+    **values: object,
+) -> AddedWater:
+    """Adds water to `scene` (default: the context's) from `preset`, `values` (preset keys such
+    as size, wave_height, waves) on top. Lake water gets the mirror set-up unless
+    `mirror_setup` is False. All or nothing: AddWaterError leaves no trace."""
+    return _add_water(
+        scene,
+        preset=preset,
+        location=location,
+        rotation=rotation,
+        collection=collection,
+        mirror_setup=mirror_setup,
+        name=name,
+        **values,
+    )
+
+
+def is_water(obj: bpy.types.Object | None) -> bool:
+    """Whether `obj` has a material the add-on made (lake or ocean shading)."""
+    return _values.is_water(obj)
+
+
+def setup_mirror(water: bpy.types.Object, scene: bpy.types.Scene | None = None) -> list[str]:
+    """Sets the scene up so lake `water` shows a true mirror; returns what changed, in words
+    (nothing for ocean shading, which reflects the world's sky)."""
+    return _mirror.setup_mirror(scene or bpy.context.scene, water)
+
+
+def add_waves(water: bpy.types.Object) -> bpy.types.NodesModifier:
+    """Adds (or finds) the four-sine `Water Waves` modifier and refits the mirror probe to it."""
+    if not is_water(water):
+        raise MirrorSetupError(f"'{getattr(water, 'name', water)}' is not a water object")
+    modifier = _waves.add_waves(water)
+    _mirror.fit_probe(water)
+    return modifier
+
+
+def read_values(water: bpy.types.Object) -> dict:
+    """The lake water's shader values, keyed as in presets ({} for ocean shading)."""
+    return _values.read_values(_values.water_material(water))
+
+
+def write_values(water: bpy.types.Object, values: dict) -> None:
+    """Sets the lake water's shader values from preset keys; each value is clamped into range.
+
+    NotEditableError for linked or overridden water; MirrorSetupError for a water needing repair.
+    """
+    material = _values.water_material(water)
+    check_editable(water, material)
+    problem = needs_repair(material) if material is not None else None
+    if problem:
+        raise MirrorSetupError(problem)
+    _values.write_values(material, values)
+
+
+def preset_ids() -> list[str]:
+    """The ids of every preset, built-in first (user presets start with "user:")."""
+    return [preset.id for preset in _presets.all_presets()]
+
+
+def apply_preset(water: bpy.types.Object, preset: str) -> None:
+    """Sets the lake water's shader values from a preset (its plane values are left alone)."""
+    write_values(water, _presets.get(preset).values)
+
+
+def add_water_to_file(source: str, target: str, **options: object) -> str:
+    """Opens the .blend `source`, adds water (as `add_water`), saves it as `target`; returns what it did."""
+    return _files.add_water_to_file(source, target, **options)
+
+
+def render_file(source: str, target: str, **options: object) -> str:
+    """Renders frames of the .blend `source` to `target` (see `water.files.render_file`)."""
+    return _files.render_file(source, target, **options)

@@ -1,0 +1,110 @@
+"""Shared `poll` checks: each says why an operator cannot run (`poll_message_set`), as
+Node Wrangler's `nw_check` does, so a greyed-out button explains itself and
+`bpy.ops` raises a RuntimeError that carries the message.
+
+Linked, overridden or missing library data is refused: edits to it live only in
+memory and vanish when the file is reloaded.
+"""
+
+from ..nodes.material import water_node
+from ..water.editable import why_not_editable
+from ..water.repair import needs_repair
+from ..water.values import water_material
+
+NOT_WATER = "The active object is not water (no Water Surface material)"
+
+
+def refuse(cls, message):
+    """Sets the poll message of `cls`; returns False for `poll` to return."""
+    cls.poll_message_set(message)
+    return False
+
+
+def _repair_first(problem):
+    return f"{problem}: repair it first (Repair Water in the Water panel)"
+
+
+def scene_editable(cls, context):
+    """The scene and its active collection can take new objects."""
+    scene = context.scene
+    if scene is None:
+        return refuse(cls, "There is no scene")
+    collection = getattr(context, "collection", None)  # where the new object goes
+    why = why_not_editable(scene, collection if collection is not scene.collection else None)
+    if why is not None:
+        return refuse(cls, why)
+    return True
+
+
+def lake_water(cls, context, purpose, editable=True):
+    """The active object is lake water, not needing repair, and (when `editable`) all local.
+
+    `purpose` ends the message for ocean water ("this choice is for lake water").
+    Checked: the object, its mesh, the material and the `Water Surface` group.
+    """
+    obj = context.active_object
+    material = water_material(obj)
+    if material is None:
+        return refuse(cls, NOT_WATER)
+    node = water_node(material)
+    if node is None:
+        return refuse(cls, f"The active object has ocean shading: {purpose}")
+    if editable:
+        why = why_not_editable(obj, obj.data, material, node.node_tree)
+        if why is not None:
+            return refuse(cls, why)
+    problem = needs_repair(material)
+    if problem is not None:
+        return refuse(cls, _repair_first(problem))
+    return True
+
+
+def any_water(cls, context):
+    """The active object is water (lake or ocean) that may be edited."""
+    obj = context.active_object
+    if water_material(obj) is None:
+        return refuse(cls, NOT_WATER)
+    why = why_not_editable(obj, obj.data)
+    if why is not None:
+        return refuse(cls, why)
+    return True
+
+
+def selected_waters(context):
+    """The selected water objects, the active one included."""
+    selected = list(context.selected_objects)
+    if context.active_object is not None and context.active_object not in selected:
+        selected.append(context.active_object)
+    return [obj for obj in selected if water_material(obj) is not None]
+
+
+def selected_water(cls, context):
+    """At least one water is selected (or active), and every selected water and the scene may be edited."""
+    waters = selected_waters(context)
+    if not waters:
+        return refuse(cls, "Select a water object (one with a Water Surface material) first")
+    why = why_not_editable(context.scene)
+    if why is not None:
+        return refuse(cls, why)
+    for obj in waters:
+        material = water_material(obj)
+        why = why_not_editable(obj, material)
+        if why is not None:
+            return refuse(cls, why)
+        problem = needs_repair(material)
+        if problem is not None:
+            return refuse(cls, _repair_first(problem))
+    return True
+
+
+def broken_water(cls, context):
+    """The active object is water needing repair, with a local material."""
+    material = water_material(context.active_object)
+    if material is None:
+        return refuse(cls, NOT_WATER)
+    why = why_not_editable(material)
+    if why is not None:
+        return refuse(cls, why)
+    if needs_repair(material) is None:
+        return refuse(cls, f"'{material.name}' needs no repair")
+    return True

@@ -1,0 +1,249 @@
+"""Finds and repairs water whose group node lost its group or sockets.
+
+A user may replace the `Water Surface` node's group, or remove a socket from
+its interface. The panel and the operators need every socket by name, so such
+a water is shown as needing repair, and `repair_water` points the node back to
+the add-on's group (rebuilt if it is the broken one), keeping the values of
+the sockets still there.
+"""
+
+import bpy
+
+from ..nodes import SPECS, ocean, water_surface
+from ..nodes.builder import VERSION_KEY, ensure_group
+from ..nodes.bump_image import ensure_bump_image
+from ..nodes.material import (
+    WATER_NODE,
+    bump_image,
+    drive_clock,
+    drive_sun,
+    drive_time,
+    water_group,
+    water_node,
+)
+from ..nodes.ocean_material import NORMAL_NODE, SKY_NODE, ocean_nodes
+from .editable import NotEditableError, check_editable, why_not_editable
+
+# Inputs the material drives: never kept or reset, driven again after a repair.
+_DRIVEN = {WATER_NODE: ("Time", "Sun Direction", "Sun Color"), NORMAL_NODE: ("Time",)}
+
+
+class RepairError(ValueError):
+    """A water that cannot be repaired."""
+
+
+def _interface(tree):
+    """{(in_out, name): socket type} of a group's interface."""
+    return {
+        (item.in_out, item.name): item.socket_type
+        for item in tree.interface.items_tree
+        if item.item_type == "SOCKET"
+    }
+
+
+def _missing(tree, spec):
+    """Names of the sockets of `spec` that `tree` lacks (or has with another type)."""
+    have = _interface(tree)
+    wanted = [("OUTPUT", s) for s in spec.outputs] + [("INPUT", s) for s in spec.inputs]
+    return [s.name for in_out, s in wanted if have.get((in_out, s.name)) != s.kind]
+
+
+def _group_problem(node, spec):
+    """What is wrong with `node`'s group against `spec`, in words, or None."""
+    if node.type != "GROUP":
+        return f"node '{node.name}' is not a group node"
+    tree = node.node_tree
+    if tree is None:
+        return f"node '{node.name}' has no group"
+    if tree.get(VERSION_KEY) is None:
+        return f"node '{node.name}' uses '{tree.name}', not the add-on's group"
+    missing = _missing(tree, spec)
+    if missing:
+        names = ", ".join(f"'{name}'" for name in missing[:3]) + (" ..." if len(missing) > 3 else "")
+        return f"group '{tree.name}' lacks {names}"
+    return None
+
+
+def _parts(material):
+    """[(node, spec)] of the add-on's group nodes in `material` (lake or ocean), [] for others."""
+    node = water_node(material)
+    if node is not None:
+        return [(node, SPECS[water_surface.NAME])]
+    nodes = ocean_nodes(material)
+    if nodes is not None:
+        normal, shade = nodes
+        return [(normal, SPECS[ocean.NORMAL_NAME]), (shade, SPECS[ocean.SHADE_NAME])]
+    return []
+
+
+def needs_repair(material):
+    """Why `material`'s water group cannot be used as it is (a sentence), or None when it can."""
+    for node, spec in _parts(material):
+        problem = _group_problem(node, spec)
+        if problem is not None:
+            return f"Water '{material.name}' needs repair: {problem}"
+    return None
+
+
+def _value(socket):
+    value = getattr(socket, "default_value", None)
+    if value is None:
+        return None
+    return tuple(value) if hasattr(value, "__len__") and not isinstance(value, str) else value
+
+
+def _kept_values(node, driven):
+    """{input name: value} of the node's unlinked inputs, the driven ones aside."""
+    return {
+        socket.name: _value(socket)
+        for socket in node.inputs
+        if socket.name not in driven and not socket.is_linked and _value(socket) is not None
+    }
+
+
+def _take_drivers(material, node):
+    """Removes the drivers on `node`'s inputs; returns the (scene, sun) they followed.
+
+    Driver paths name inputs by index, so after the group changes they point to
+    the wrong sockets (or none): they are removed and made again.
+    """
+    tree = material.node_tree
+    animation = tree.animation_data
+    scene = sun = None
+    if animation is None:
+        return scene, sun
+    prefix = f'nodes["{bpy.utils.escape_identifier(node.name)}"].inputs['
+    for fcurve in list(animation.drivers):
+        if not fcurve.data_path.startswith(prefix):
+            continue
+        for variable in fcurve.driver.variables:
+            for target in variable.targets:
+                owner = target.id
+                if owner is None:
+                    continue
+                if target.id_type == "SCENE" and scene is None:
+                    scene = owner
+                elif target.id_type == "OBJECT" and owner.type == "LIGHT" and sun is None:
+                    sun = owner
+        animation.drivers.remove(fcurve)
+    return scene, sun
+
+
+def _target_group(node, spec, image_source):
+    """The add-on's group for `node`, rebuilt when it is the broken one."""
+
+    def build():
+        if spec.name == water_surface.NAME:
+            return water_group(image_source)
+        image = ensure_bump_image() if spec.name == ocean.NORMAL_NAME else None
+        return ensure_group(spec, SPECS, image=image)
+
+    target = build()
+    if _missing(target, spec):
+        check_editable(target)
+        # Version 0 keeps the add-on's mark: the builder upgrades it in place, interface and nodes.
+        target[VERSION_KEY] = 0
+        target = build()
+    return target
+
+
+def _restore(node, kept, driven):
+    """Writes the kept values back by name; inputs without one go back to their default.
+
+    Returns (names kept, names reset).
+    """
+    defaults = {
+        item.name: item.default_value
+        for item in node.node_tree.interface.items_tree
+        if item.item_type == "SOCKET" and item.in_out == "INPUT" and hasattr(item, "default_value")
+    }
+    restored, reset = [], []
+    for socket in node.inputs:
+        if socket.name in driven or socket.is_linked or not hasattr(socket, "default_value"):
+            continue
+        if socket.name in kept:
+            try:
+                socket.default_value = kept[socket.name]
+                restored.append(socket.name)
+                continue
+            except (TypeError, ValueError):
+                pass
+        if socket.name in defaults:
+            socket.default_value = defaults[socket.name]
+            reset.append(socket.name)
+    return restored, reset
+
+
+def _link(tree, output, socket):
+    """Links `output` to `socket` when `socket` is free or fed by another socket of `output`'s node.
+
+    A socket fed by another node stays as the user linked it.
+    """
+    sources = [link.from_socket for link in socket.links]
+    if sources == [output] or any(source.node != output.node for source in sources):
+        return
+    tree.links.new(output, socket)
+
+
+def _material_output(tree):
+    outputs = [n for n in tree.nodes if n.type == "OUTPUT_MATERIAL"]
+    return next((n for n in outputs if n.is_active_output), outputs[0] if outputs else None)
+
+
+def repair_water(material, scene=None):
+    """Points `material`'s water group node(s) back to the add-on's group; returns what it did, in words.
+
+    Values of the inputs still there are kept by name; missing ones take their defaults.
+    Raises NotEditableError for library data and RepairError when there is nothing to repair.
+    """
+    parts = _parts(material)
+    if not parts:
+        raise RepairError(f"'{getattr(material, 'name', material)}' is not a water material")
+    check_editable(material)
+    if needs_repair(material) is None:
+        return f"'{material.name}' needed no repair"
+    tree = material.node_tree
+    done, all_reset, followed_scene = [], [], None
+    for node, spec in parts:
+        if node.type != "GROUP":
+            raise RepairError(
+                f"node '{node.name}' of '{material.name}' is not a group node: add the water again"
+            )
+        driven = _DRIVEN.get(node.name, ())
+        kept = _kept_values(node, driven)
+        image = bump_image(material) if spec.name == water_surface.NAME else None
+        found_scene, sun = _take_drivers(material, node)
+        followed_scene = followed_scene or found_scene
+        group = _target_group(node, spec, image)
+        why = why_not_editable(group) if _missing(group, spec) else None
+        if why is not None:
+            raise NotEditableError(why)
+        node.node_tree = group
+        restored, reset = _restore(node, kept, driven)
+        all_reset += reset
+        done.append(f"'{node.name}' uses '{group.name}' ({len(restored)} values kept)")
+        clock_scene = followed_scene or scene or bpy.context.scene
+        if spec.name == water_surface.NAME:
+            drive_time(material, clock_scene)
+            drive_sun(material, sun)
+            output = _material_output(tree)
+            if output is not None:
+                _link(tree, node.outputs["Shader"], output.inputs["Surface"])
+        elif spec.name == ocean.NORMAL_NAME:
+            drive_clock(node.inputs["Time"], clock_scene)
+    nodes = ocean_nodes(material)
+    if nodes is not None:
+        normal, shade = nodes
+        _link(tree, normal.outputs["Normal"], shade.inputs["Normal"])
+        sky = tree.nodes.get(SKY_NODE)
+        if sky is not None:
+            _link(tree, sky.outputs[0], shade.inputs["Sky"])
+            if sky.type == "TEX_ENVIRONMENT":
+                _link(tree, normal.outputs["Reflection"], sky.inputs["Vector"])
+        output = _material_output(tree)
+        if output is not None:
+            _link(tree, shade.outputs["Shader"], output.inputs["Surface"])
+    message = f"Repaired '{material.name}': " + "; ".join(done)
+    if all_reset:
+        message += "; back to default: " + ", ".join(all_reset)
+    return message
