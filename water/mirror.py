@@ -27,6 +27,7 @@ from .values import water_material
 from .waves import amplitude_sum, wave_modifier
 
 PROBE_TAG = "water_surface_mirror"  # custom property naming the water a probe mirrors
+PROBE_ROLE = "Mirror Probe"
 PROBE_LIFT = 0.01  # metres above the water
 SKY_COLOR = (0.45, 0.6, 0.85)
 SKY_NAME = "Sky"
@@ -126,9 +127,11 @@ def _orphan_probe_data(water):
 def _add_probe(scene, water):
     data = _orphan_probe_data(water) or bpy.data.lightprobes.new(f"{water.name} Mirror", "PLANE")
     data[PROBE_TAG] = water.name
+    mark(data, PROBE_ROLE, 1)
     data.influence_distance = max(data.influence_distance, 4 * PROBE_LIFT)
     probe = bpy.data.objects.new(f"{water.name} Mirror", data)
     probe[PROBE_TAG] = water.name
+    mark(probe, PROBE_ROLE, 1)
     for collection in water.users_collection or (scene.collection,):
         collection.objects.link(probe)
     probe.parent = water

@@ -95,7 +95,7 @@ class AddedWater:
         """One line for a report or the command line."""
         text = f"added '{self.object.name}' ({preset_name}, {self.values['size']:g} m)"
         text += f" with material '{self.material.name}'"
-        if self.values["shading"] == "ocean":
+        if not mirror.needs_mirror(self.material):
             text += "; the ocean reflects the world's sky, no mirror set-up needed"
         elif self.changes:
             text += "; mirror set-up: " + ", ".join(self.changes)
