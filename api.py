@@ -22,6 +22,7 @@ from . import presets as _presets
 from .presets import PresetError
 from .water import files as _files
 from .water import mirror as _mirror
+from .water import surroundings as _surroundings
 from .water import values as _values
 from .water import waves as _waves
 from .water.editable import NotEditableError, check_editable
@@ -30,6 +31,7 @@ from .water.mirror import MirrorSetupError
 from .water.plane import AddedWater, AddWaterError
 from .water.plane import add_water as _add_water
 from .water.repair import needs_repair
+from .water.surroundings import SurroundingsError
 
 __all__ = (
     "AddWaterError",
@@ -46,7 +48,9 @@ __all__ = (
     "preset_ids",
     "read_values",
     "render_file",
+    "set_surroundings",
     "setup_mirror",
+    "SurroundingsError",
     "write_values",
 )
 
@@ -94,6 +98,17 @@ def add_waves(water: bpy.types.Object) -> bpy.types.NodesModifier:
     modifier = _waves.add_waves(water)
     _mirror.fit_probe(water)
     return modifier
+
+
+def set_surroundings(
+    water: bpy.types.Object,
+    collection: bpy.types.Collection | None = None,
+    scene: bpy.types.Scene | None = None,
+) -> list[str]:
+    """Makes `water` measure depth and shore foam against `collection`'s objects, or, with None,
+    against the add-on's own collection gathered again from the objects reaching below it.
+    Returns what changed; SurroundingsError for a collection holding the water itself."""
+    return _surroundings.ensure_surroundings(water, scene or bpy.context.scene, collection=collection)
 
 
 def read_values(water: bpy.types.Object) -> dict:

@@ -1,6 +1,6 @@
 """Node groups and the water material, each group described as data and built by one builder."""
 
-from . import bump_uv, ocean, water_surface, water_waves, wind_frame
+from . import bump_uv, ocean, surroundings, water_surface, water_waves, wind_frame
 from .builder import NodeGroupError, ensure_group
 
 SPECS = {
@@ -12,6 +12,8 @@ SPECS = {
         water_waves.SPEC,
         ocean.NORMAL_SPEC,
         ocean.SHADE_SPEC,
+        surroundings.SPEC,
+        surroundings.SAMPLE_SPEC,
     )
 }
 

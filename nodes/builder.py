@@ -8,12 +8,16 @@
   socket (so materials keep their links and values) and its nodes rebuilt.
 * A newer one (saved by a newer add-on) is left alone, so the file keeps working.
 * A group half-built when building fails is removed, and the error names it.
+* Image slots: `BUMP_IMAGE` nodes get the image asked for (and the group is found by it);
+  `FOAM_IMAGE` nodes get the add-on's foam tile, never part of how a group is found. A reused
+  group whose image of either kind was deleted is given the one asked for.
 """
 
 import bpy
 
+from .foam_image import ensure_foam_image
 from .ownership import VERSION_KEY, mark, owned
-from .spec import BUMP_IMAGE
+from .spec import BUMP_IMAGE, FOAM_IMAGE
 
 COLUMN_WIDTH = 240
 ROW_GAP = 40
@@ -25,16 +29,21 @@ class NodeGroupError(RuntimeError):
     """A node group could not be built or reused."""
 
 
-def ensure_group(spec, specs, name=None, image=None):
+def ensure_group(spec, specs, name=None, image=None, foam=None):
     """The node tree for `spec`, built or upgraded if needed.
 
-    `specs` maps the names of nested groups to their specs; `image` fills the
-    spec's `BUMP_IMAGE` slots, and `name` (default: the spec's) names a new tree.
+    `specs` maps the names of nested groups to their specs (a spec's own `includes` come
+    first); `image` fills the spec's `BUMP_IMAGE` slots and `foam` its `FOAM_IMAGE` slots (default:
+    the add-on's packed foam tile, made when needed); `name` (default: the spec's) names a new tree.
     """
-    nested = {group: ensure_group(specs[group], specs) for group in spec.nested_groups()}
+    lookup = {**specs, **{included.name: included for included in spec.includes}}
+    if foam is None and spec.slots(FOAM_IMAGE):
+        foam = ensure_foam_image()
+    nested = {group: ensure_group(lookup[group], lookup, foam=foam) for group in spec.nested_groups()}
     tree = find_group(spec, image)
+    images = {BUMP_IMAGE: image, FOAM_IMAGE: foam}
     if tree is not None and tree.get(VERSION_KEY, 0) >= spec.version:
-        _adopt_image(tree, image)
+        _adopt_images(tree, spec, images)
         return tree
     created = tree is None
     if created:
@@ -43,7 +52,7 @@ def ensure_group(spec, specs, name=None, image=None):
         tree.is_modifier = True  # offered in the Add Modifier menu
     try:
         _sync_interface(tree, spec)
-        _rebuild_nodes(tree, spec, image, nested)
+        _rebuild_nodes(tree, spec, images, nested)
     except Exception as error:
         tree_name = tree.name
         if created:
@@ -54,32 +63,40 @@ def ensure_group(spec, specs, name=None, image=None):
     return tree
 
 
-def _uses_image(spec):
-    return any(value == BUMP_IMAGE for node in spec.nodes.values() for value in node.props.values())
+def _slot_nodes(tree, spec, placeholder):
+    """The image nodes of `tree` that fill `spec`'s `placeholder` slots (found by their keys)."""
+    keys = set(spec.slots(placeholder))
+    return [node for node in tree.nodes if node.type == "TEX_IMAGE" and node.name in keys]
 
 
-def _images(tree):
-    return {node.image for node in tree.nodes if node.type == "TEX_IMAGE"}
+def _images(tree, spec):
+    """The images in `tree`'s bump slots (all its image nodes when none has a slot's key)."""
+    nodes = _slot_nodes(tree, spec, BUMP_IMAGE) or [n for n in tree.nodes if n.type == "TEX_IMAGE"]
+    return {node.image for node in nodes}
 
 
 def find_group(spec, image=None):
     """The add-on's own local group for `spec` (sampling `image`, when the spec samples one), or None.
 
-    A group whose image was deleted is taken for any image (it is given the new one).
+    Only the bump slots count: the foam tile is the add-on's own in every group. A group whose
+    bump image was deleted is taken for any image (it is given the new one).
     """
     candidates = [t for t in owned(bpy.data.node_groups, spec.name) if t.bl_idname == spec.tree_type]
-    if not _uses_image(spec):
+    if not spec.slots(BUMP_IMAGE):
         return candidates[0] if candidates else None
-    exact = [t for t in candidates if _images(t) == {image}]
-    lost = [t for t in candidates if _images(t) == {None}]
+    exact = [t for t in candidates if _images(t, spec) == {image}]
+    lost = [t for t in candidates if _images(t, spec) == {None}]
     return (exact or lost or [None])[0]
 
 
-def _adopt_image(tree, image):
-    """Gives a reused group whose image was deleted the image it is asked for."""
-    if image is not None and _images(tree) == {None}:
-        for node in tree.nodes:
-            if node.type == "TEX_IMAGE":
+def _adopt_images(tree, spec, images):
+    """Gives a reused group whose image (bump or foam) was deleted the one it is asked for."""
+    for placeholder, image in images.items():
+        nodes = _slot_nodes(tree, spec, placeholder)
+        if placeholder == BUMP_IMAGE and not nodes:
+            nodes = [n for n in tree.nodes if n.type == "TEX_IMAGE"]
+        if image is not None and nodes and {node.image for node in nodes} == {None}:
+            for node in nodes:
                 node.image = image
 
 
@@ -123,7 +140,7 @@ def _set_socket(item, socket):
     item.hide_value = socket.hide_value
 
 
-def _rebuild_nodes(tree, spec, image, nested):
+def _rebuild_nodes(tree, spec, images, nested):
     tree.nodes.clear()
     nodes = {
         "input": tree.nodes.new("NodeGroupInput"),
@@ -131,20 +148,20 @@ def _rebuild_nodes(tree, spec, image, nested):
     }
     nodes["input"].location = (0, 0)
     for key, description in spec.nodes.items():
-        nodes[key] = _new_node(tree, key, description, image, nested)
+        nodes[key] = _new_node(tree, key, description, images, nested)
     for source, target in spec.links:
         tree.links.new(_socket(nodes, source, "outputs"), _socket(nodes, target, "inputs"))
     _layout(tree, nodes, spec)
 
 
-def _new_node(tree, key, description, image, nested):
+def _new_node(tree, key, description, images, nested):
     node = tree.nodes.new(description.type)
     node.name = key
     node.label = description.label
     if description.group:
         node.node_tree = nested[description.group]
     for prop, value in description.props.items():
-        setattr(node, prop, image if value == BUMP_IMAGE else value)
+        setattr(node, prop, images[value] if isinstance(value, str) and value in images else value)
     for socket_key, value in description.values.items():
         socket = node.inputs[socket_key]
         if hasattr(socket.default_value, "__len__") and len(socket.default_value) == 4 and len(value) == 3:

@@ -10,6 +10,7 @@ from ..water.editable import check_editable
 from . import SPECS, water_surface
 from .builder import ensure_group
 from .bump_image import ensure_bump_image
+from .foam_image import ensure_foam_image
 from .ownership import is_local
 
 WATER_NODE = "Water Surface"
@@ -23,14 +24,17 @@ def water_group(image=None):
     normal map uses a group of its own, named "Water Surface (<image>)", built
     from the same description and reused for every material with that image.
     It is found by the image it samples, so renaming the image changes nothing.
+    The foam tile (`foam_image.py`) is the add-on's own in every such group: it is sampled
+    in the nested `Water Surface Foam Coverage` group, made again when lost.
     """
     default = ensure_bump_image()
+    foam = ensure_foam_image()
     if image is None or image == default:
-        return ensure_group(SPECS[water_surface.NAME], SPECS, image=default)
+        return ensure_group(SPECS[water_surface.NAME], SPECS, image=default, foam=foam)
     if image.colorspace_settings.name != "Non-Color" and is_local(image):
         image.colorspace_settings.name = "Non-Color"
     return ensure_group(
-        SPECS[water_surface.NAME], SPECS, name=f"{water_surface.NAME} ({image.name})", image=image
+        SPECS[water_surface.NAME], SPECS, name=f"{water_surface.NAME} ({image.name})", image=image, foam=foam
     )
 
 
@@ -86,6 +90,14 @@ def bump_image(material):
     node = water_node(material)
     bump = node.node_tree.nodes.get("bump") if node is not None else None
     return bump.image if bump is not None else None
+
+
+def foam_image(material):
+    """The foam tile the material's water group samples (in its nested foam group), or None."""
+    node = water_node(material)
+    foam = node.node_tree.nodes.get("foam") if node is not None else None
+    tile = foam.node_tree.nodes.get("tile") if foam is not None and foam.node_tree is not None else None
+    return tile.image if tile is not None else None
 
 
 def set_bump_image(material, image):

@@ -13,6 +13,8 @@ from dataclasses import dataclass, field
 
 # Stands for the image a group is built with (`ensure_group(..., image=...)`), in node props.
 BUMP_IMAGE = "<bump image>"
+# Stands for the add-on's foam tile (`ensure_group(..., foam=...)`, default: `foam_image.py`'s own).
+FOAM_IMAGE = "<foam image>"
 
 
 @dataclass(frozen=True)
@@ -51,10 +53,16 @@ class GroupSpec:
     nodes: dict
     links: tuple
     tree_type: str = "ShaderNodeTree"
+    # Specs of nested groups this description carries itself (found before the shared `SPECS`).
+    includes: tuple = ()
 
     def nested_groups(self):
         """Names of the groups this one uses, which must be built first."""
         return [node.group for node in self.nodes.values() if node.group]
+
+    def slots(self, placeholder):
+        """Keys of the nodes with `placeholder` (`BUMP_IMAGE`, `FOAM_IMAGE`) among their properties."""
+        return [key for key, node in self.nodes.items() if placeholder in node.props.values()]
 
 
 def math(operation, column, label="", clamp=False, **values):
@@ -69,6 +77,16 @@ def vmath(operation, column, label="", **values):
     index = {"a": 0, "b": 1, "c": 2, "scale": "Scale"}
     props = {"operation": operation}
     return Node("ShaderNodeVectorMath", column, props, {index[k]: v for k, v in values.items()}, label)
+
+
+def attribute(name, column, label=""):
+    """An Attribute node reading the geometry attribute `name` (0 where the mesh has none)."""
+    return Node(
+        "ShaderNodeAttribute",
+        column,
+        {"attribute_type": "GEOMETRY", "attribute_name": name},
+        label=label or name,
+    )
 
 
 def group_node(name, column, label=""):

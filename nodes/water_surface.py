@@ -21,22 +21,52 @@ Per pixel (Blender is Z-up; `eye` is Geometry > Incoming, pointing at the camera
   `Sun Color * Specular Strength * pow(max(dot(reflect(L, n), eye), 0), Specular Power)`
   (seed 003: a coloured light multiplies its highlight).
 
+With the surroundings' point attributes (`water_depth`, `water_shore_distance`,
+`water_surroundings`, stored by the surroundings modifier; an Attribute node reads 0
+where a mesh has none), two additions, both nothing on a water without them:
+
+* **colour by depth** (Beer-Lambert): what the refraction shows is multiplied per
+  channel by `T = exp(-Absorption * path)`, `path = water_depth / cos_t` the way of the
+  refracted view ray down to the bed (Snell at IOR 1.33 from `cos_i = eye . N`, N the
+  geometric normal: `cos_t = sqrt(1 - (1 - cos_i^2) / 1.33^2)`), and the light the water
+  scatters back, `Scatter Color * (1 - T)`, is emitted at the refraction's weight.
+  Absorption 0 (the default) gives `T = 1`: the seeds' water exactly.
+* **shore foam**: coverage `c = Foam Amount * flag * clamp((b + f - 1) / 0.25, 0, 1)`
+  with `f = 1 - smoothstep(water_shore_distance / Foam Width)` (1 at the waterline,
+  0 from Foam Width on) and `b` the foam tile (`foam_map.py`, values spread evenly over
+  0..1) read at the bump's scrolled UV, so the foam drifts with the wind. The tile is
+  thresholded at `1 - f`: near the waterline only the bubbles' middles stay open, further
+  out only the lace remains, and from Foam Width on nothing. The foam is a white Diffuse
+  BSDF at weight `c`, lit by the scene; everything else is weighted by `1 - c`. It lives in
+  the nested group `Water Surface Foam Coverage`, which holds the foam image.
+
 Reflection is a sharp Glossy BSDF and refraction a Refraction BSDF (IOR 1.33):
 EEVEE's ray tracing supplies what the seeds' reflection and refraction maps
 held, and Cycles traces them. Neither closure adds a Fresnel of its own, so the
 seeds' two lerps are closure weights: the glossy's colour is
 `(1 - Dull Blend) * (1 - F)`, the refraction's `(1 - Dull Blend) * F` (exact with
 the Material Output's Thickness at 0: see `material.py`), and one emission
-carries the dull colour and the glint. The debug views only change these three
-weights, so they cost no extra closures.
+carries the dull colour, the glint and the scattered light. The debug views only
+change these weights (and the foam's), so they cost no extra closures: view 2 is the
+refraction as seen through the water (`T` and the scatter included), so the final
+picture stays the composition of the views; 6 shows `T` and 7 the foam coverage, unlit.
 """
 
-from . import bump_uv, wind_frame
-from .spec import BUMP_IMAGE, GroupSpec, Node, Socket, group_node, math, vmath
+import math as _math
+
+from . import bump_uv, foam_map, wind_frame
+from .spec import BUMP_IMAGE, FOAM_IMAGE, GroupSpec, Node, Socket, attribute, group_node, math, vmath
 
 NAME = "Water Surface"
-VERSION = 2
+VERSION = 3
 MAX_BUMP_LAYERS = 4
+FOAM_NAME = "Water Surface Foam Coverage"
+IOR = 1.33
+
+# The attributes the surroundings modifier stores on the water's points (all floats, per point).
+DEPTH_ATTRIBUTE = "water_depth"  # metres straight down to the bed; 1000 where nothing is below
+SHORE_ATTRIBUTE = "water_shore_distance"  # metres in the plane to the nearest waterline; 1000: none
+FLAG_ATTRIBUTE = "water_surroundings"  # 1 where the modifier ran; an Attribute node reads 0 elsewhere
 
 DEBUG_VIEWS = (
     (0, "FINAL", "Final", "The finished water"),
@@ -45,6 +75,8 @@ DEBUG_VIEWS = (
     (3, "FRESNEL", "Fresnel", "F as unlit grey"),
     (4, "NORMAL", "Bump Normal", "The bump normal n * 0.5 + 0.5, unlit"),
     (5, "GLINT", "Glint", "The sun glint alone, unlit, in the sun's colour"),
+    (6, "TRANSMITTANCE", "Transmittance", "T = exp(-Absorption x path) per channel, unlit"),
+    (7, "FOAM", "Foam", "The foam coverage as unlit grey"),
 )
 
 # The reference's default light, (-1, -1, -1) in XNA's Y-up world, is (-1, 1, -1) in Blender.
@@ -125,9 +157,47 @@ INPUTS = (
         "NodeSocketInt",
         0,
         min=0,
-        max=5,
-        tooltip="0 final, 1 reflection, 2 refraction, 3 Fresnel F, 4 bump normal, 5 glint",
+        max=len(DEBUG_VIEWS) - 1,
+        tooltip="0 final, 1 reflection, 2 refraction, 3 Fresnel F, 4 bump normal, 5 glint, "
+        "6 transmittance, 7 foam",
     ),
+    Socket(
+        "Absorption",
+        "NodeSocketColor",
+        (0.0, 0.0, 0.0, 1.0),
+        tooltip="How much of each colour the water absorbs per metre seen through it "
+        "(needs the surroundings' depth; black = clear, as the seeds' water)",
+    ),
+    Socket(
+        "Scatter Color",
+        "NodeSocketColor",
+        (0.0, 0.05, 0.06, 1.0),
+        tooltip="Light scattered back by the water in place of what it absorbs (shows only with Absorption)",
+    ),
+    Socket(
+        "Foam Width",
+        "NodeSocketFloat",
+        1.0,
+        min=0.01,
+        max=100.0,
+        subtype="DISTANCE",
+        tooltip="How far from the waterline the shore foam reaches, in metres",
+    ),
+    Socket(
+        "Foam Amount",
+        "NodeSocketFloat",
+        0.0,
+        min=0.0,
+        max=1.0,
+        subtype="FACTOR",
+        tooltip="Shore and contact foam, lit by the scene (0 = none; needs the surroundings)",
+    ),
+)
+
+FOAM_INPUTS = (
+    Socket("Vector", "NodeSocketVector", tooltip="Where the foam tile is read", hide_value=True),
+    INPUTS[-2],
+    INPUTS[-1],
 )
 
 
@@ -178,14 +248,17 @@ def _layer_nodes():
 def _weight_nodes():
     """The closure weights and the emission colour for the final picture and each debug view.
 
-    Final: glossy `(1 - Dull Blend) (1 - F)`, refraction `(1 - Dull Blend) F`,
-    emission `Dull Blend * Dull Color + glint`. View 1 or 2: that closure at
-    weight 1 alone. Views 3-5: only the emission, showing F, the normal colour
-    or the glint. Any other number shows the final picture.
+    Final: with foam coverage `c`, glossy `(1 - c)(1 - Dull Blend)(1 - F)`, refraction
+    `(1 - c)(1 - Dull Blend) F` times the transmittance `T`, emission
+    `(1 - c)(Dull Blend * Dull Color + glint)` plus the scattered light
+    `Scatter Color (1 - T)` at the refraction's weight, and the foam's white diffuse at `c`.
+    View 1 or 2: that closure at weight 1 alone (view 2 with its `T` and scatter, so the
+    final picture stays the composition of the views). Views 3-7: only the emission,
+    showing F, the normal colour, the glint, `T` or `c`. Any other number shows the final picture.
     """
     nodes, links = {}, []
     previous = None
-    for number in range(1, 6):
+    for number in range(1, len(DEBUG_VIEWS)):
         nodes[f"is_{number}"] = math("COMPARE", 17, f"view == {number}", b=float(number), c=0.5)
         links.append(("input:Debug View", f"is_{number}:#0"))
         if previous is not None:
@@ -196,22 +269,34 @@ def _weight_nodes():
             previous = "is_1:Value"
     nodes |= {
         "is_final": math("SUBTRACT", 19, "final view", a=1.0),
+        "foam_clear": math("SUBTRACT", 19, "1 - foam", a=1.0),
         "clear": math("SUBTRACT", 19, "1 - Dull Blend", a=1.0),
-        "keep": math("MULTIPLY", 20, "final x (1 - Dull Blend)"),
+        "final_share": math("MULTIPLY", 20, "final x (1 - foam)"),
+        "foam_weight": math("MULTIPLY", 20, "foam if final"),
+        "keep": math("MULTIPLY", 21, "x (1 - Dull Blend)"),
         "one_minus_f": math("SUBTRACT", 20, "1 - F", a=1.0),
-        "w_reflect": math("MULTIPLY_ADD", 21, "reflection weight"),
-        "w_refract": math("MULTIPLY_ADD", 21, "refraction weight"),
+        "w_reflect": math("MULTIPLY_ADD", 22, "reflection weight"),
+        "w_refract": math("MULTIPLY_ADD", 22, "refraction weight"),
+        "refract_color": vmath("SCALE", 23, "T x refraction weight"),
         "dull_part": vmath("SCALE", 19, "Dull Blend x Dull Color"),
         "lit": vmath("ADD", 20, "+ glint"),
-        "e_final": vmath("SCALE", 21, "if final"),
-        "e_f": vmath("MULTIPLY_ADD", 22, "+ F if view 3"),
-        "e_n": vmath("MULTIPLY_ADD", 22, "+ normal if view 4"),
-        "e_glint": vmath("MULTIPLY_ADD", 22, "+ glint if view 5"),
+        "e_final": vmath("SCALE", 22, "if final, x (1 - foam)"),
+        "e_f": vmath("MULTIPLY_ADD", 23, "+ F if view 3"),
+        "e_n": vmath("MULTIPLY_ADD", 23, "+ normal if view 4"),
+        "e_glint": vmath("MULTIPLY_ADD", 23, "+ glint if view 5"),
+        "e_scatter": vmath("MULTIPLY_ADD", 24, "+ scatter x refraction weight"),
+        "e_transmit": vmath("MULTIPLY_ADD", 24, "+ T if view 6"),
+        "e_foam": vmath("MULTIPLY_ADD", 24, "+ foam if view 7"),
     }
     links += [
         (previous, "is_final:#1"),
+        ("foam:Coverage", "foam_clear:#1"),
         ("input:Dull Blend", "clear:#1"),
-        ("is_final:Value", "keep:#0"),
+        ("is_final:Value", "final_share:#0"),
+        ("foam_clear:Value", "final_share:#1"),
+        ("is_final:Value", "foam_weight:#0"),
+        ("foam:Coverage", "foam_weight:#1"),
+        ("final_share:Value", "keep:#0"),
         ("clear:Value", "keep:#1"),
         ("fresnel:Value", "one_minus_f:#1"),
         ("keep:Value", "w_reflect:#0"),
@@ -220,12 +305,14 @@ def _weight_nodes():
         ("keep:Value", "w_refract:#0"),
         ("fresnel:Value", "w_refract:#1"),
         ("is_2:Value", "w_refract:#2"),
+        ("transmit:Vector", "refract_color:#0"),
+        ("w_refract:Value", "refract_color:Scale"),
         ("input:Dull Color", "dull_part:#0"),
         ("input:Dull Blend", "dull_part:Scale"),
         ("dull_part:Vector", "lit:#0"),
         ("glint_color:Vector", "lit:#1"),
         ("lit:Vector", "e_final:#0"),
-        ("is_final:Value", "e_final:Scale"),
+        ("final_share:Value", "e_final:Scale"),
         ("fresnel:Value", "e_f:#0"),
         ("is_3:Value", "e_f:#1"),
         ("e_final:Vector", "e_f:#2"),
@@ -235,17 +322,128 @@ def _weight_nodes():
         ("glint_color:Vector", "e_glint:#0"),
         ("is_5:Value", "e_glint:#1"),
         ("e_n:Vector", "e_glint:#2"),
+        ("scatter:Vector", "e_scatter:#0"),
+        ("w_refract:Value", "e_scatter:#1"),
+        ("e_glint:Vector", "e_scatter:#2"),
+        ("transmit:Vector", "e_transmit:#0"),
+        ("is_6:Value", "e_transmit:#1"),
+        ("e_scatter:Vector", "e_transmit:#2"),
+        ("foam:Coverage", "e_foam:#0"),
+        ("is_7:Value", "e_foam:#1"),
+        ("e_transmit:Vector", "e_foam:#2"),
     ]
     return nodes, links
 
 
+def _depth_nodes():
+    """Beer-Lambert: `T = exp(-Absorption * path)`, `path` = the refracted ray's way down to the bed.
+
+    `cos_i = eye . N` with the geometric normal; Snell at IOR 1.33 gives
+    `cos_t^2 = 1 - (1 - cos_i^2) / 1.33^2` and `path = depth / cos_t`; per channel
+    `exp(-x)` is `(1 / e)^x`. The scattered light is `Scatter Color * (1 - T)`. With no
+    `water_depth` attribute the depth reads 0, so `T = 1` and nothing is scattered.
+    """
+    nodes = {
+        "depth": attribute(DEPTH_ATTRIBUTE, 14, "water_depth (m)"),
+        "cos_i": vmath("DOT_PRODUCT", 15, "cos_i = eye . geometric normal"),
+        "cos_i2": math("MULTIPLY", 16, "cos_i^2"),
+        "cos_t2": math(
+            "MULTIPLY_ADD", 17, f"cos_t^2 = 1 - (1 - cos_i^2) / {IOR}^2", b=1 / IOR**2, c=1 - 1 / IOR**2
+        ),
+        "inv_cos_t": math("INVERSE_SQRT", 18, "1 / cos_t"),
+        "path": math("MULTIPLY", 19, "path = depth / cos_t"),
+        "optical": vmath("SCALE", 20, "Absorption x path"),
+        "optical_xyz": Node("ShaderNodeSeparateXYZ", 21, label="per channel"),
+        **{f"transmit_{c}": math("POWER", 22, f"T.{c} = exp(-{c})", a=_math.exp(-1.0)) for c in "xyz"},
+        "transmit": Node("ShaderNodeCombineXYZ", 23, label="T"),
+        "one_minus_t": vmath("SUBTRACT", 24, "1 - T", a=(1.0, 1.0, 1.0)),
+        "scatter": vmath("MULTIPLY", 25, "Scatter Color x (1 - T)"),
+    }
+    links = [
+        ("geometry:Incoming", "cos_i:#0"),
+        ("geometry:True Normal", "cos_i:#1"),
+        ("cos_i:Value", "cos_i2:#0"),
+        ("cos_i:Value", "cos_i2:#1"),
+        ("cos_i2:Value", "cos_t2:#0"),
+        ("cos_t2:Value", "inv_cos_t:#0"),
+        ("depth:Fac", "path:#0"),
+        ("inv_cos_t:Value", "path:#1"),
+        ("input:Absorption", "optical:#0"),
+        ("path:Value", "optical:Scale"),
+        ("optical:Vector", "optical_xyz:Vector"),
+    ]
+    for c in "xyz":
+        links += [
+            (f"optical_xyz:{c.upper()}", f"transmit_{c}:#1"),
+            (f"transmit_{c}:Value", f"transmit:{c.upper()}"),
+        ]
+    links += [
+        ("transmit:Vector", "one_minus_t:#1"),
+        ("input:Scatter Color", "scatter:#0"),
+        ("one_minus_t:Vector", "scatter:#1"),
+    ]
+    return nodes, links
+
+
+FOAM_SPEC = GroupSpec(
+    name=FOAM_NAME,
+    version=1,
+    description="Shore foam coverage: falloff from the waterline, thresholded against the foam tile",
+    inputs=FOAM_INPUTS,
+    outputs=(Socket("Coverage", "NodeSocketFloat", tooltip="Share of the water covered by foam, 0 to 1"),),
+    nodes={
+        "flag": attribute(FLAG_ATTRIBUTE, 1, "water_surroundings (1 = measured)"),
+        "shore": attribute(SHORE_ATTRIBUTE, 1, "water_shore_distance (m)"),
+        "tile": Node(
+            "ShaderNodeTexImage",
+            1,
+            {"extension": "REPEAT", "interpolation": "Linear", "image": FOAM_IMAGE},
+            label="foam tile b",
+        ),
+        # f = 1 - smoothstep(d / Foam Width): 1 at the waterline, 0 from Foam Width on.
+        "falloff": Node(
+            "ShaderNodeMapRange",
+            2,
+            {"interpolation_type": "SMOOTHSTEP", "clamp": True},
+            {1: 0.0, 3: 1.0, 4: 0.0},
+            label="f = 1 - smoothstep(d / Foam Width)",
+        ),
+        "sum": math("ADD", 3, "b + f"),
+        # clamp((b + f - 1) / softness): the tile, thresholded at 1 - f.
+        "breakup": Node(
+            "ShaderNodeMapRange",
+            4,
+            {"interpolation_type": "LINEAR", "clamp": True},
+            {1: 1.0, 2: 1.0 + foam_map.SOFTNESS, 3: 0.0, 4: 1.0},
+            label=f"clamp((b + f - 1) / {foam_map.SOFTNESS:g})",
+        ),
+        "amount": math("MULTIPLY", 5, "x Foam Amount"),
+        "coverage": math("MULTIPLY", 6, "x surroundings flag", clamp=True),
+    },
+    links=(
+        ("shore:Fac", "falloff:Value"),
+        ("input:Foam Width", "falloff:From Max"),
+        ("input:Vector", "tile:Vector"),
+        ("tile:Color", "sum:#0"),
+        ("falloff:Result", "sum:#1"),
+        ("sum:Value", "breakup:Value"),
+        ("breakup:Result", "amount:#0"),
+        ("input:Foam Amount", "amount:#1"),
+        ("amount:Value", "coverage:#0"),
+        ("flag:Fac", "coverage:#1"),
+        ("coverage:Value", "output:Coverage"),
+    ),
+)
+
 _LAYER_NODES, _LAYER_LINKS = _layer_nodes()
 _WEIGHT_NODES, _WEIGHT_LINKS = _weight_nodes()
+_DEPTH_NODES, _DEPTH_LINKS = _depth_nodes()
 
 SPEC = GroupSpec(
     name=NAME,
     version=VERSION,
-    description="Lake water: bump, Fresnel blend of reflection and refraction, dull tint, sun glint",
+    description="Lake water: bump, Fresnel blend of reflection and refraction, dull tint, sun glint, "
+    "colour by depth, shore foam",
     inputs=INPUTS,
     outputs=(Socket("Shader", "NodeSocketShader"),),
     nodes={
@@ -291,26 +489,32 @@ SPEC = GroupSpec(
         "glint_pow": math("POWER", 19, "pow(, Specular Power)"),
         "glint": math("MULTIPLY", 20, "* Specular Strength"),
         "glint_color": vmath("SCALE", 21, "* Sun Color"),
+        **_DEPTH_NODES,
+        # Shore foam: its coverage, read at the bump's scrolled UV (so it drifts with the wind).
+        "foam": group_node(FOAM_NAME, 13, "foam coverage c"),
         **_WEIGHT_NODES,
-        # The closures, weighted, and the one emission.
+        # The closures, weighted, the one emission and the foam.
         "glossy": Node(
             "ShaderNodeBsdfAnisotropic",
-            23,
+            26,
             {"distribution": "GGX"},
             {"Roughness": 0.0},
             label="reflection",
         ),
         "refraction": Node(
             "ShaderNodeBsdfRefraction",
-            23,
+            26,
             {"distribution": "GGX"},
             {"Roughness": 0.0, "IOR": 1.33},
             label="refraction",
         ),
-        "emission": Node("ShaderNodeEmission", 23, values={"Strength": 1.0}, label="dull colour + glint"),
-        "closures": Node("ShaderNodeAddShader", 24, label="reflection + refraction"),
-        "final": Node("ShaderNodeAddShader", 25, label="+ emission"),
+        "emission": Node("ShaderNodeEmission", 26, values={"Strength": 1.0}, label="dull colour + glint"),
+        "foam_bsdf": Node("ShaderNodeBsdfDiffuse", 26, values={"Roughness": 0.0}, label="foam: white, lit"),
+        "closures": Node("ShaderNodeAddShader", 27, label="reflection + refraction"),
+        "final": Node("ShaderNodeAddShader", 28, label="+ emission"),
+        "with_foam": Node("ShaderNodeAddShader", 29, label="+ foam"),
     },
+    includes=(FOAM_SPEC,),
     links=(
         ("input:Wave Length", "bump_uv:Wave Length"),
         ("input:Wind Direction", "bump_uv:Wind Direction"),
@@ -367,16 +571,23 @@ SPEC = GroupSpec(
         ("input:Specular Strength", "glint:#1"),
         ("input:Sun Color", "glint_color:#0"),
         ("glint:Value", "glint_color:Scale"),
+        *_DEPTH_LINKS,
+        ("bump_uv:Vector", "foam:Vector"),
+        ("input:Foam Width", "foam:Foam Width"),
+        ("input:Foam Amount", "foam:Foam Amount"),
         *_WEIGHT_LINKS,
         ("normal_h:Normal", "glossy:Normal"),
         ("normal_h:Normal", "refraction:Normal"),
         ("w_reflect:Value", "glossy:Color"),
-        ("w_refract:Value", "refraction:Color"),
-        ("e_glint:Vector", "emission:Color"),
+        ("refract_color:Vector", "refraction:Color"),
+        ("e_foam:Vector", "emission:Color"),
+        ("foam_weight:Value", "foam_bsdf:Color"),
         ("glossy:BSDF", "closures:#0"),
         ("refraction:BSDF", "closures:#1"),
         ("closures:Shader", "final:#0"),
         ("emission:Emission", "final:#1"),
-        ("final:Shader", "output:Shader"),
+        ("final:Shader", "with_foam:#0"),
+        ("foam_bsdf:BSDF", "with_foam:#1"),
+        ("with_foam:Shader", "output:Shader"),
     ),
 )

@@ -11,6 +11,7 @@ from .preset_ops import (
     OBJECT_OT_water_surface_preset_remove,
 )
 from .repair_ops import OBJECT_OT_water_surface_repair
+from .surroundings_ops import OBJECT_OT_water_surroundings_set
 from .waves_ops import OBJECT_OT_water_waves_add
 
 classes = (
@@ -23,6 +24,7 @@ classes = (
     OBJECT_OT_water_surface_bump_set,
     OBJECT_OT_water_waves_add,
     OBJECT_OT_water_surface_repair,
+    OBJECT_OT_water_surroundings_set,
 )
 
 _register_classes, _unregister_classes = bpy.utils.register_classes_factory(classes)

@@ -56,6 +56,10 @@ class OBJECT_OT_water_surface_add(object_utils.AddObjectHelper, bpy.types.Operat
     specular_strength: field_property("specular_strength")
     bump_strength: field_property("bump_strength")
     bump_layers: field_property("bump_layers")
+    absorption: field_property("absorption")
+    scatter_color: field_property("scatter_color")
+    foam_width: field_property("foam_width")
+    foam_amount: field_property("foam_amount")
     mirror_setup: bpy.props.BoolProperty(
         name="Mirror Set-Up",
         description="Turn on EEVEE ray tracing and add a planar probe so the water shows a true mirror",

@@ -30,16 +30,21 @@ class Field:
     choices: tuple = ()
 
 
-def _from_socket(key, socket_name, kind):
+def _from_socket(key, socket_name, kind, high=None):
+    """A field for one `Water Surface` input; `high` overrides the top of a colour's 0..1 range."""
     socket = next(s for s in water_surface.INPUTS if s.name == socket_name)
     if kind == "vec2":
-        default, low, high = tuple(socket.default[:2]), -1.0, 1.0
+        default, low, top = tuple(socket.default[:2]), -1.0, 1.0
     elif kind == "color":
-        default, low, high = tuple(socket.default[:3]), 0.0, 1.0
+        default, low, top = tuple(socket.default[:3]), 0.0, 1.0
     else:
-        default, low, high = socket.default, socket.min, socket.max
-    return Field(key, socket_name, kind, default, low, high, socket_name, socket.tooltip)
+        default, low, top = socket.default, socket.min, socket.max
+    return Field(
+        key, socket_name, kind, default, low, top if high is None else high, socket_name, socket.tooltip
+    )
 
+
+MAX_ABSORPTION = 50.0  # per metre: past this the water is opaque within 2 cm
 
 SIZE = Field(
     "size", None, "float", 128.0, 0.01, 100000.0, "Size", "Edge length of the water plane (the seeds' 128)"
@@ -85,6 +90,11 @@ FIELDS = (
     _from_socket("specular_strength", "Specular Strength", "float"),
     _from_socket("bump_strength", "Bump Strength", "float"),
     _from_socket("bump_layers", "Bump Layers", "int"),
+    # Per metre: murky water absorbs a few times per metre, so the colour range reaches past 1.
+    _from_socket("absorption", "Absorption", "color", high=MAX_ABSORPTION),
+    _from_socket("scatter_color", "Scatter Color", "color"),
+    _from_socket("foam_width", "Foam Width", "float"),
+    _from_socket("foam_amount", "Foam Amount", "float"),
 )
 BY_KEY = {field.key: field for field in FIELDS}
 # The shader's values: everything but the plane's size.

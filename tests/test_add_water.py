@@ -79,9 +79,11 @@ def test_adding_water_three_times_reuses_the_group_and_the_bump_image(scene):
     waters = [o for o in bpy.data.objects if harness.addon("water.values").is_water(o)]
     assert len(waters) == 3
     assert len({o.active_material.name for o in waters}) == 3, "each water has its own values"
-    groups = [g.name for g in bpy.data.node_groups if g.name.startswith("Water Surface")]
-    assert sorted(groups) == ["Water Surface", "Water Surface Bump UV", "Water Surface Wind Frame"]
-    assert [i.name for i in bpy.data.images] == ["Water Surface Bump"]
+    groups = sorted(g.name for g in bpy.data.node_groups)
+    lake = ["Water Surface", "Water Surface Bump UV", "Water Surface Foam Coverage"]
+    lake.append("Water Surface Wind Frame")
+    assert groups == lake, "each group once, no .001 (and no surroundings: nothing stands in the water)"
+    assert sorted(i.name for i in bpy.data.images) == ["Water Surface Bump", "Water Surface Foam"]
 
 
 def test_undo_removes_the_water_and_its_set_up(scene):

@@ -135,3 +135,30 @@ def test_clamp_values_never_refuses(schema):
         "specular_power": 1.0,
         "wind_force": 0.0,
     }
+
+
+def test_depth_and_foam_presets_and_keys(store, tmp_path):
+    presets = {p.id: p.values for p in store.load_dir(store.BUILTIN_DIR)[0]}
+    lake = presets["lake"]
+    assert lake["absorption"] == (0.0, 0.0, 0.0) and lake["foam_amount"] == 0.0, "the seeds' model"
+    for name in ("clear_lake", "tropical_shallows", "murky_pond"):
+        assert min(presets[name]["absorption"]) > 0, name
+    for name in ("clear_lake", "tropical_shallows"):
+        assert presets[name]["foam_amount"] > 0, name
+    # Absorption is per metre: beyond 1 is allowed, up to the cap; the others are clamped as usual.
+    path = _write(
+        tmp_path,
+        "deep",
+        {
+            "values": {
+                "absorption": [99, 2.5, -1],
+                "scatter_color": [2, 0.5, -1],
+                "foam_width": 0,
+                "foam_amount": 3,
+            }
+        },
+    )
+    values = store.read_preset(path)[0].values
+    assert values["absorption"] == (50.0, 2.5, 0.0)
+    assert values["scatter_color"] == (1.0, 0.5, 0.0)
+    assert values["foam_width"] == pytest.approx(0.01) and values["foam_amount"] == 1.0

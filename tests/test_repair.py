@@ -49,12 +49,12 @@ def draw_panel():
     """Runs the sidebar panel's own `draw` for the active object; returns what it drew."""
     panel_class = harness.addon("ui.panel").VIEW3D_PT_water_surface
     log = []
-    panel = type(
-        "Panel",
-        (),
-        {"layout": Layout(log), "draw_ocean": panel_class.draw_ocean, "draw_waves": panel_class.draw_waves},
-    )()
-    panel_class.draw(panel, bpy.context)
+    methods = {name: value for name, value in vars(panel_class).items() if name.startswith("draw_")}
+    panel = type("Panel", (), {"layout": Layout(log), **methods})()
+    # Once anything asks whether the panel is extended, Blender wraps `draw` in a dispatcher that
+    # needs a real layout and workspace; the panel's own draw is the first function it holds.
+    draw = getattr(panel_class.draw, "_draw_funcs", [panel_class.draw])[0]
+    draw(panel, bpy.context)
     return log
 
 

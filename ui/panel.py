@@ -13,6 +13,7 @@ from ..nodes.water_waves import WAVE_COUNT
 from ..water.editable import why_not_editable
 from ..water.mirror import find_probe
 from ..water.repair import needs_repair
+from ..water.surroundings import surroundings_collection, surroundings_modifier
 from ..water.values import water_material
 from ..water.waves import input_ids, input_property, wave_modifier
 
@@ -29,6 +30,7 @@ _SECTIONS = (
     ("Wind", "FORCE_WIND", ("Wind Direction", "Wind Force")),
     ("Tint", "COLOR", ("Dull Color", "Dull Blend")),
     ("Glint", "LIGHT_SUN", ("Specular Power", "Specular Strength")),
+    ("Surroundings", "OUTLINER_COLLECTION", ("Absorption", "Scatter Color", "Foam Width", "Foam Amount")),
 )
 
 
@@ -97,6 +99,8 @@ class VIEW3D_PT_water_surface(bpy.types.Panel):
                     col.prop(socket, "default_value", index=1, text="Y")
                 else:
                     box.prop(socket, "default_value", text=name)
+            if title == "Surroundings":
+                self.draw_surroundings(box, context.active_object)
             if title == "Glint":
                 sun = glint_sun(material)
                 box.operator(
@@ -126,6 +130,15 @@ class VIEW3D_PT_water_surface(bpy.types.Panel):
             icon="CHECKMARK" if ready else "ERROR",
         )
         box.operator("object.water_mirror_setup", icon="MOD_MIRROR")
+
+    def draw_surroundings(self, box, obj):
+        """Which collection the water measures its depth and shore against."""
+        if surroundings_modifier(obj) is None:
+            text = "Surroundings: none (add them)"
+        else:
+            collection = surroundings_collection(obj)
+            text = f"Surroundings: {collection.name if collection else 'nothing'}"
+        box.operator("object.water_surroundings_set", text=text, icon="OUTLINER_COLLECTION")
 
     def draw_ocean(self, layout, material):
         """The ocean shading's inputs: bump taps, deep colour, glint."""

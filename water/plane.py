@@ -10,7 +10,7 @@ from .. import presets
 from ..nodes.material import make_water_material
 from ..nodes.ocean_material import make_ocean_material
 from ..presets import schema
-from . import mirror, waves
+from . import mirror, surroundings, waves
 from .editable import check_editable
 from .values import write_values
 
@@ -115,6 +115,7 @@ def add_water(
     mirror_setup=True,
     name="Water",
     matrix=None,
+    see_surroundings=True,
     **overrides,
 ):
     """Adds a water plane to `scene` (default: the context's); the one way water is added.
@@ -122,6 +123,10 @@ def add_water(
     `overrides` are preset keys (`size`, `wave_height`, `resolution`, `waves`,
     `shading`, ...) that replace the preset's values; every value is clamped
     into range. `matrix` (a 4x4 world matrix) wins over `location` and `rotation`.
+    With `see_surroundings`, when objects reach below the new water, it gets its
+    surroundings (`surroundings.py`) for depth colour and shore foam, and the
+    grid the points the waterline needs; with nothing below, nothing is added
+    (the panel's Surroundings button adds them later).
     Atomic: on any failure everything it made is removed and `AddWaterError`
     (one line) is raised; PresetError for an unknown preset or value.
     """
@@ -139,13 +144,29 @@ def add_water(
         if matrix is None:
             matrix = Matrix.LocRotScale(Vector(location), Euler(rotation), None)
         obj.matrix_world = matrix
+        around = surroundings.default_surroundings(obj, scene) if see_surroundings else []
+        if around:
+            notes += _densify_for_surroundings(obj, values)
         material = dress_water(obj, scene, values)
-        changes = mirror.setup_mirror(scene, obj) if mirror_setup else []
+        changes = surroundings.ensure_surroundings(obj, scene) if around else []
+        changes += mirror.setup_mirror(scene, obj) if mirror_setup else []
     except Exception as error:
         _roll_back(scene, before)
         message = str(error).strip().splitlines()[-1] if str(error).strip() else type(error).__name__
         raise AddWaterError(f"adding water failed, nothing was added: {message}") from error
     return AddedWater(obj, material, values, changes, notes)
+
+
+def _densify_for_surroundings(obj, values):
+    """A grid fine enough to find the waterline of the objects reaching below the new water."""
+    needed = surroundings.needed_resolution(values["size"])
+    if values["resolution"] >= needed:
+        return []
+    old = obj.data
+    obj.data = new_water_mesh(old.name, values["size"], needed)
+    bpy.data.meshes.remove(old)
+    values["resolution"] = needed
+    return [f"resolution raised to {needed} so the waterline of what stands in the water is found"]
 
 
 # What adding water can create; removed again, newest kinds first, when it fails.

@@ -28,8 +28,20 @@ def add_waves(obj):
     modifier = wave_modifier(obj)
     if modifier is None:
         modifier = obj.modifiers.new(MODIFIER, "NODES")
+        # Before the surroundings, which measure the displaced surface.
+        later = [i for i, m in enumerate(obj.modifiers) if _role(m) == SURROUNDINGS_ROLE]
+        if later:
+            obj.modifiers.move(len(obj.modifiers) - 1, later[0])
     modifier.node_group = ensure_group(SPECS[water_waves.NAME], SPECS)
     return modifier
+
+
+SURROUNDINGS_ROLE = "Water Surroundings Sample"  # the water's modifier reading its surroundings
+
+
+def _role(modifier):
+    group = modifier.node_group if modifier.type == "NODES" else None
+    return role_of(group) if group is not None else None
 
 
 def input_ids(modifier):
