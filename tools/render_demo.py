@@ -5,10 +5,22 @@ height 0 added with the add-on's own operator, a white glossy sphere on the
 right, a rock cube scaled 4 on the left, a floor below the water and a sun for
 the glint. Writes out/demo.png (the final view, with the reflection-only and
 refraction-only views as insets, as the seeds' test draws its two maps) and
-out/demo_frames.png (a strip of frames a second apart: the water moves), and
-copies both to docs/. Run through `tools/demo`.
+out/demo_frames.png (a strip of frames a second apart: the water moves).
+
+Then the same lake at the shore, out/demo_shore.png: the sphere, the rock, the
+sky and the suns again, but the floor is a sandy bed rising through the surface
+on the right into a beach, a short pier's posts stand in the shallows, and the
+water is the `tropical_shallows` preset. The bed and the posts are made before
+the water, so adding it gathers them as its surroundings: the water colours by
+depth (Beer-Lambert) and foams along the waterline and around what stands in it.
+Its insets are the transmittance and foam views (Debug View 6 and 7).
+
+All three are copied to docs/. Run through `tools/demo` (`tools/demo shore`
+renders only the shore image; `--preview` renders it small and quick, to out/
+only, for looking at a change).
 """
 
+import math
 import shutil
 import sys
 import tempfile
@@ -36,6 +48,24 @@ STRIP_GAP = 4
 SKY_ZENITH = (0.06, 0.2, 0.58)
 SKY_HORIZON = (0.5, 0.64, 0.82)
 SKY_GROUND = (0.35, 0.4, 0.45)  # below the horizon: only seen past the water's far edge
+
+SHORE_PRESET = "tropical_shallows"
+PREVIEW_PERCENT = 50  # `--preview`: the shore image at half size, PREVIEW_SAMPLES samples
+PREVIEW_SAMPLES = 4
+# The beach: the waterline runs from (5, -6) away to the right (about (14, 24)); `inland` is the distance
+# inland, across it. The bed rises gently under the shallows, more steeply in the deep.
+SHORE_POINT = (5.0, -6.0)
+SHORE_INLAND = (0.958, -0.288)  # unit normal to the waterline, pointing up the beach
+BED_SIZE = 140.0  # more than the water: depth is measured under every point of it
+BED_VERTICES = 281  # 0.5 m apart
+PIER_XS = (-0.5, 1.5, 3.5, 5.5)  # posts in two rows, from the shallows up to the waterline
+PIER_YS = (-3.6, -2.4)
+POST_RADIUS = 0.15
+POST_TOP = 1.3
+# Higher and steeper than the lake's camera: the water shows more of what is under it (the
+# seeds' Fresnel gives the refraction dot(eye, n)), so the colour by depth reads.
+SHORE_CAMERA = ((0.0, -16.0, 6.0), (1.5, 8.0, 0.0), 30.0)
+SHORE_FILL = 2.2  # the backlit beach needs more of the light from behind the camera
 
 
 class Progress:
@@ -140,6 +170,72 @@ def floor_material(bpy):
     return material
 
 
+def sand_material(bpy):
+    """Rough sand: mottled grains, fine bumps, darker and smoother where it is wet (below z = 0.15)."""
+    material, bsdf = _new_material(bpy, "Sand")
+    nodes, links = material.node_tree.nodes, material.node_tree.links
+    coords = nodes.new("ShaderNodeTexCoord")
+    noise = nodes.new("ShaderNodeTexNoise")
+    noise.inputs["Scale"].default_value = 0.6
+    noise.inputs["Detail"].default_value = 6.0
+    grains = nodes.new("ShaderNodeTexNoise")
+    grains.inputs["Scale"].default_value = 40.0
+    grains.inputs["Detail"].default_value = 2.0
+    mottle = _ramp(nodes, [(0.3, (0.62, 0.5, 0.33)), (0.7, (0.86, 0.73, 0.5))])
+    split = nodes.new("ShaderNodeSeparateXYZ")
+    wet = nodes.new("ShaderNodeMapRange")  # 1 below the waterline, 0 from 0.15 m above it
+    wet.inputs["From Min"].default_value = 0.15
+    wet.inputs["From Max"].default_value = 0.0
+    darken = nodes.new("ShaderNodeMix")
+    darken.data_type = "RGBA"
+    darken.blend_type = "MULTIPLY"
+    darken.inputs["B"].default_value = (0.6, 0.58, 0.55, 1.0)
+    roughness = nodes.new("ShaderNodeMapRange")
+    roughness.inputs["To Min"].default_value = 0.95
+    roughness.inputs["To Max"].default_value = 0.55
+    bump = nodes.new("ShaderNodeBump")
+    bump.inputs["Strength"].default_value = 0.25
+    bump.inputs["Distance"].default_value = 0.02
+    links.new(coords.outputs["Object"], noise.inputs["Vector"])
+    links.new(coords.outputs["Object"], grains.inputs["Vector"])
+    links.new(noise.outputs["Fac"], mottle.inputs["Fac"])
+    links.new(coords.outputs["Object"], split.inputs["Vector"])
+    links.new(split.outputs["Z"], wet.inputs["Value"])
+    links.new(wet.outputs["Result"], darken.inputs["Factor"])
+    links.new(mottle.outputs["Color"], darken.inputs["A"])
+    links.new(wet.outputs["Result"], roughness.inputs["Value"])
+    links.new(grains.outputs["Fac"], bump.inputs["Height"])
+    links.new(darken.outputs["Result"], bsdf.inputs["Base Color"])
+    links.new(roughness.outputs["Result"], bsdf.inputs["Roughness"])
+    links.new(bump.outputs["Normal"], bsdf.inputs["Normal"])
+    return material
+
+
+def wood_material(bpy):
+    """Weathered wood: brown grain running along the post (noise stretched in Z), rough."""
+    material, bsdf = _new_material(bpy, "Wood")
+    nodes, links = material.node_tree.nodes, material.node_tree.links
+    coords = nodes.new("ShaderNodeTexCoord")
+    stretch = nodes.new("ShaderNodeVectorMath")
+    stretch.operation = "MULTIPLY"
+    stretch.inputs[1].default_value = (12.0, 12.0, 0.6)
+    grain = nodes.new("ShaderNodeTexNoise")
+    grain.inputs["Scale"].default_value = 2.0
+    grain.inputs["Detail"].default_value = 8.0
+    color = _ramp(nodes, [(0.35, (0.14, 0.09, 0.05)), (0.65, (0.36, 0.25, 0.15))])
+    bump = nodes.new("ShaderNodeBump")
+    bump.inputs["Strength"].default_value = 0.4
+    bump.inputs["Distance"].default_value = 0.01
+    links.new(coords.outputs["Object"], stretch.inputs[0])
+    links.new(stretch.outputs["Vector"], grain.inputs["Vector"])
+    links.new(grain.outputs["Fac"], color.inputs["Fac"])
+    links.new(grain.outputs["Fac"], bump.inputs["Height"])
+    links.new(color.outputs["Color"], bsdf.inputs["Base Color"])
+    links.new(bump.outputs["Normal"], bsdf.inputs["Normal"])
+    bsdf.inputs["Roughness"].default_value = 0.8
+    return material
+
+
 # --- scene -----------------------------------------------------------------
 
 
@@ -183,15 +279,16 @@ def add_fill(bpy, scene):
     return fill
 
 
-def add_water(bpy):
-    """The seeds' lake through the add-on's own operator (it also runs the mirror set-up)."""
-    result = bpy.ops.object.water_surface_add(size=128, location=(0.0, 0.0, 0.0))
+def add_water(bpy, preset="lake"):
+    """The seeds' lake through the add-on's own operator (it also runs the mirror set-up, and
+    gathers what reaches below the water as its surroundings)."""
+    result = bpy.ops.object.water_surface_add(preset=preset, size=128, location=(0.0, 0.0, 0.0))
     if result != {"FINISHED"}:
         raise RuntimeError(f"object.water_surface_add returned {result}")
     return bpy.context.active_object
 
 
-def add_props(bpy, scene):
+def add_props(bpy, scene, floor=True):
     """Sphere on the right, rock cube on the left (both partly under water) and the floor."""
     bpy.ops.mesh.primitive_uv_sphere_add(radius=2.0, location=(5.0, 6.0, 1.2), segments=64, ring_count=32)
     bpy.ops.object.shade_smooth()
@@ -200,6 +297,8 @@ def add_props(bpy, scene):
     rock = harness.add_cube(scene, (-5.0, 7.0, 1.2), size=1.0, material=rock_material(bpy), name="Rock")
     rock.scale = (4.0, 4.0, 4.0)
     rock.rotation_euler = (0.0, 0.0, 0.35)
+    if not floor:
+        return
     bpy.ops.mesh.primitive_plane_add(size=128, location=(0.0, 0.0, -2.0))
     bpy.context.object.name = "Floor"
     bpy.context.object.data.materials.append(floor_material(bpy))
@@ -219,18 +318,99 @@ def build_scene(bpy):
     return scene, water, strip_camera
 
 
+def bed_height(x, y):
+    """The sandy bed's height (numpy arrays): a beach rising gently out of the water on the right,
+    the shallows sloping 1 in 10 for 12 m, then the deep dropping 1 in 3 to 6 m, with a wavy
+    waterline and low sand ripples."""
+    inland = (x - SHORE_POINT[0]) * SHORE_INLAND[0] + (y - SHORE_POINT[1]) * SHORE_INLAND[1]
+    inland = inland + 1.2 * np.sin(y / 4.0) + 0.6 * np.sin(y / 1.7 + 1.0)  # a wavy waterline
+    shallows = 0.1 * inland
+    deep = -1.2 + 0.33 * (inland + 12.0)
+    # A smooth minimum of the two slopes (1 m of rounding), then the beach levelling off at 1.2 m.
+    z = -np.logaddexp(-shallows / 0.3, -deep / 0.3) * 0.3
+    z = np.minimum(z, 1.2 - 0.8 * np.exp(-np.maximum(inland, 0.0) / 6.0))
+    z = np.maximum(z, -6.0)
+    return z + 0.04 * np.sin(x * 1.3 + y * 0.4) * np.sin(y * 0.9 - x * 0.2)
+
+
+def add_beach(bpy, scene):
+    """The sandy bed as a displaced grid covering the whole water."""
+    mesh = harness.addon("water.plane").new_water_mesh("Beach", BED_SIZE, BED_VERTICES)
+    co = np.empty(len(mesh.vertices) * 3)
+    mesh.vertices.foreach_get("co", co)
+    co = co.reshape(-1, 3)
+    co[:, 2] = bed_height(co[:, 0], co[:, 1])
+    mesh.vertices.foreach_set("co", co.ravel())
+    mesh.update()
+    mesh.materials.append(sand_material(bpy))
+    beach = bpy.data.objects.new("Beach", mesh)
+    scene.collection.objects.link(beach)
+    return beach
+
+
+def add_posts(bpy, scene):
+    """A short pier's posts: wooden cylinders from the sand up to POST_TOP, in two rows."""
+    import bmesh
+
+    wood = wood_material(bpy)
+    posts = []
+    for row, y in enumerate(PIER_YS):
+        for column, x in enumerate(PIER_XS):
+            mesh = bpy.data.meshes.new("Post")
+            bm = bmesh.new()
+            bottom = float(bed_height(np.array(x), np.array(y))) - 1.0  # sunk a metre into the sand
+            bmesh.ops.create_cone(
+                bm,
+                cap_ends=True,
+                segments=24,
+                radius1=POST_RADIUS,
+                radius2=POST_RADIUS,
+                depth=POST_TOP - bottom,
+            )
+            bm.to_mesh(mesh)
+            bm.free()
+            for polygon in mesh.polygons:
+                polygon.use_smooth = len(polygon.vertices) == 4  # smooth sides, flat caps
+            mesh.materials.append(wood)
+            post = bpy.data.objects.new(f"Post {row}.{column}", mesh)
+            # A little lean, as old posts have.
+            post.location = (x, y, (POST_TOP + bottom) / 2)
+            post.rotation_euler = (0.03 * math.sin(3 * x + y), 0.03 * math.cos(2 * x - y), 0.0)
+            scene.collection.objects.link(post)
+            posts.append(post)
+    return posts
+
+
+def build_shore_scene(bpy, width, height, samples):
+    """The demo's lake at the shore: the bed and posts first, so the water gathers them."""
+    scene = harness.clean_scene(width=width, height=height, samples=samples)
+    add_sky(bpy, scene)
+    add_sun(bpy, scene)
+    add_props(bpy, scene, floor=False)
+    add_beach(bpy, scene)
+    add_posts(bpy, scene)
+    water = add_water(bpy, preset=SHORE_PRESET)
+    add_fill(bpy, scene).data.energy = SHORE_FILL
+    harness.add_camera(scene, *SHORE_CAMERA)
+    return scene, water
+
+
 # --- images ----------------------------------------------------------------
 
 # A 3 x 5 pixel font for the labels: each glyph is five rows of three bits.
 _FONT = {
     "A": "010101111101101",
     "C": "011100100100011",
+    "D": "110101101101110",
     "E": "111100110100111",
     "F": "111100110100100",
+    "H": "101101111101101",
     "I": "111010010010111",
     "L": "100100100100111",
+    "M": "101111111101101",
     "N": "101111111111101",
     "O": "010101101101010",
+    "P": "110101110100100",
     "R": "110101110101101",
     "S": "011100010001110",
     "T": "111010010010010",
@@ -275,14 +455,13 @@ def paste(image, small, x, y, label):
     draw_label(image, label, x + 3, y + 3)
 
 
-def compose_insets(main, reflection, refraction):
-    """The main view with the reflection and refraction views as insets in the sky, top right."""
+def compose_insets(main, insets):
+    """The main view with `insets` ((label, pixels), the last rightmost) in the sky, top right."""
     image = main.copy()
-    height, width = reflection.shape[:2]
-    y = INSET_MARGIN
-    right = image.shape[1] - INSET_MARGIN - width
-    paste(image, refraction, right, y, "refraction")
-    paste(image, reflection, right - INSET_MARGIN - width, y, "reflection")
+    right = image.shape[1]
+    for label, small in reversed(insets):
+        right -= INSET_MARGIN + small.shape[1]
+        paste(image, small, right, INSET_MARGIN, label)
     return image
 
 
@@ -316,23 +495,28 @@ def save_png(bpy, pixels, path):
 # --- renders ---------------------------------------------------------------
 
 
-def render_views(scene, water, work, progress):
-    """The final view, then the reflection-only and refraction-only views (Debug View 1 and 2)."""
+def render_views(scene, water, work, progress, views=((1, "reflection"), (2, "refraction"))):
+    """The final view, then `views` (debug view number, label) as insets: by default the
+    reflection-only and refraction-only views (Debug View 1 and 2)."""
     debug = harness.addon("nodes.material").water_node(water.active_material).inputs["Debug View"]
-    progress(f"main view, {MAIN_SIZE[0]} x {MAIN_SIZE[1]}")
+    scale = scene.render.resolution_percentage
+    width, height = (
+        round(size * scale / 100) for size in (scene.render.resolution_x, scene.render.resolution_y)
+    )
+    progress(f"main view, {width} x {height}")
     main = harness.render(scene, work / "main.png")
     # The insets are rendered at half size and box-filtered down by 2 more: a quarter of the width.
-    scene.render.resolution_percentage = 100 * 2 // INSET_SCALE
-    views = {}
+    scene.render.resolution_percentage = scale * 2 // INSET_SCALE
+    insets = []
     try:
-        for number, name in ((1, "reflection"), (2, "refraction")):
+        for number, name in views:
             progress(f"{name} only (Debug View {number})")
             debug.default_value = number
-            views[name] = shrink(harness.render(scene, work / f"{name}.png"), 2)
+            insets.append((name, shrink(harness.render(scene, work / f"{name}.png"), 2)))
     finally:
         debug.default_value = 0
-        scene.render.resolution_percentage = 100
-    return compose_insets(main, views["reflection"], views["refraction"])
+        scene.render.resolution_percentage = scale
+    return compose_insets(main, insets)
 
 
 def render_strip(scene, camera, work, progress):
@@ -356,22 +540,51 @@ def render_strip(scene, camera, work, progress):
     return tile_strip(frames, labels)
 
 
-def main():
-    progress = Progress(total=3 + len(STRIP_TIMES))
+SHORE_VIEWS = ((6, "depth"), (7, "foam"))  # transmittance T and foam coverage, unlit
+
+
+def render_shore(bpy, work, progress, preview=False):
+    """The shore image: the final view with the depth (transmittance) and foam views as insets
+    (the preview: the final view alone)."""
+    samples = PREVIEW_SAMPLES if preview else SAMPLES
+    scene, water = build_shore_scene(bpy, *MAIN_SIZE, samples)
+    if preview:
+        scene.render.resolution_percentage = PREVIEW_PERCENT
+    return render_views(scene, water, work, progress, views=() if preview else SHORE_VIEWS)
+
+
+def main(argv=()):
+    """`shore`: only the shore image; `--preview`: only the shore image, small and quick, to out/."""
+    preview = "--preview" in argv
+    lake = not preview and "shore" not in argv
+    views = 1 + (0 if preview else len(SHORE_VIEWS))
+    progress = Progress(total=views + (3 + len(STRIP_TIMES) if lake else 0))
     bpy = harness.start()
     harness.install(harness.build_zip(tempfile.mkdtemp(prefix="water_surface_dist_")))
-    scene, water, strip_camera = build_scene(bpy)
     print(
         f"rendering the demo with Blender {bpy.app.version_string} (software EEVEE: a few minutes)",
         flush=True,
     )
     OUT.mkdir(parents=True, exist_ok=True)
     DOCS.mkdir(parents=True, exist_ok=True)
+    written = []
     with tempfile.TemporaryDirectory(prefix="water_surface_demo_") as tmp:
         work = Path(tmp)
-        demo = save_png(bpy, render_views(scene, water, work, progress), OUT / "demo.png")
-        strip = save_png(bpy, render_strip(scene, strip_camera, work, progress), OUT / "demo_frames.png")
-    for path in (demo, strip):
+        if lake:
+            scene, water, strip_camera = build_scene(bpy)
+            written.append(save_png(bpy, render_views(scene, water, work, progress), OUT / "demo.png"))
+            strip = render_strip(scene, strip_camera, work, progress)
+            written.append(save_png(bpy, strip, OUT / "demo_frames.png"))
+            print(f"the lake took {progress.elapsed():.0f} s", flush=True)
+        shore_start = progress.elapsed()
+        name = "demo_shore_preview.png" if preview else "demo_shore.png"
+        shore = save_png(bpy, render_shore(bpy, work, progress, preview=preview), OUT / name)
+        print(f"the shore took {progress.elapsed() - shore_start:.0f} s", flush=True)
+    if preview:
+        print(f"wrote {shore} (a preview: docs/ left alone)", flush=True)
+    else:
+        written.append(shore)
+    for path in written:
         shutil.copyfile(path, DOCS / path.name)
         print(f"wrote {path} and {DOCS / path.name}", flush=True)
     print(f"done in {progress.elapsed():.0f} s", flush=True)
@@ -379,4 +592,4 @@ def main():
 
 
 if __name__ == "__main__":
-    sys.exit(main())
+    sys.exit(main(sys.argv[1:]))
