@@ -1,6 +1,8 @@
 """Render farms: a file with every kind of water the add-on makes, checked with the farm's own tools.
 
-The file holds a lake (mirror set-up on), a lake with waves and the seeds' ocean.
+The file holds a lake (mirror set-up on), a lake with waves, the seeds' ocean and a
+shore: tropical shallows over a sloping bed, with its surroundings (the hidden
+cache object and its Geometry Nodes), depth colour and the packed foam tile.
 Blender Asset Tracer (BAT, the packer Flamenco uses) must find nothing outside
 the file and nothing missing; its pack must render, from another folder with no
 add-on and auto-run scripts off, as the original does with the add-on. Frames
@@ -35,6 +37,13 @@ def shot(addon, eevee, tmp_path_factory):
         size=12.0, resolution=48, waves=True, wave_length=1.0, location=(6, 0, 0)
     )
     bpy.ops.object.water_surface_add(preset="ocean", size=40.0, resolution=64, location=(0, 30, -1))
+    # A shore in front: the bed rises through the surface, so the water gathers it, with foam.
+    bed = bpy.data.meshes.new("Bed")
+    bed.from_pydata([(-3, -13, -1.0), (3, -13, 0.5), (3, -7, 0.5), (-3, -7, -1.0)], [], [(0, 1, 2, 3)])
+    scene.collection.objects.link(bpy.data.objects.new("Bed", bed))
+    bpy.ops.object.water_surface_add(preset="tropical_shallows", size=6.0, location=(0, -10, 0))
+    shore = bpy.context.active_object
+    assert harness.addon("water.surroundings").surroundings_cache(shore) is not None
     harness.add_camera(scene, (0, -16, 7), (0, 4, 0))
     path = folder / "shot.blend"
     bpy.ops.wm.save_as_mainfile(filepath=str(path))
