@@ -47,4 +47,7 @@ class OBJECT_OT_water_surroundings_set(bpy.types.Operator):
             return {"CANCELLED"}
         done = "; ".join(changes) or "nothing changed"
         self.report({"INFO"}, f"Surroundings of '{water.name}': {done}")
+        coarse = surroundings.coarse_grid_note(water)
+        if coarse:
+            self.report({"WARNING"}, coarse)
         return {"FINISHED"}

@@ -550,7 +550,9 @@ def test_a_deleted_waters_cache_goes_with_the_next_surroundings(scene, surroundi
     bpy.data.objects.remove(lake)
     assert bpy.data.objects[cache_name].parent is None, "left behind"
     _bed(scene)  # something below the new water, so it gets surroundings
-    added = harness.addon("api").add_water(scene, size=4.0, resolution=9, mirror_setup=False, name="Other")
+    added = harness.addon("api").add_water(
+        scene, size=4.0, resolution=9, mirror_setup=False, name="Other", foam_amount=0.5
+    )
     assert cache_name not in bpy.data.objects and any("deleted" in change for change in added.changes)
     assert surroundings.surroundings_cache(added.object).name == "Other Surroundings"
 
@@ -581,5 +583,16 @@ def test_a_failed_add_removes_the_cache(scene, surroundings, monkeypatch):
 
     monkeypatch.setattr(harness.addon("water.mirror"), "setup_mirror", fail)
     with pytest.raises(harness.addon("water.plane").AddWaterError):
-        harness.addon("api").add_water(scene, size=4.0, resolution=9, mirror_setup=True)
+        harness.addon("api").add_water(scene, size=4.0, resolution=9, mirror_setup=True, foam_amount=0.5)
     assert {o.name for o in bpy.data.objects} == before
+
+
+def test_the_seeds_lake_over_a_bed_gathers_nothing_and_stays_one_quad(scene, surroundings):
+    """Surroundings cost points and a cache; water that shows neither depth nor foam gets none."""
+    _bed(scene)
+    added = harness.addon("api").add_water(scene, size=SIZE, mirror_setup=False)
+    assert len(added.object.data.vertices) == 4 and surroundings.surroundings_cache(added.object) is None
+    assert not [o for o in bpy.data.objects if surroundings.is_cache(o)]
+    shore = harness.addon("api").add_water(scene, size=SIZE, mirror_setup=False, absorption=(0.5, 0.1, 0.1))
+    assert surroundings.surroundings_cache(shore.object) is not None
+    assert len(shore.object.data.vertices) == surroundings.needed_resolution(SIZE) ** 2

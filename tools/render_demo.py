@@ -57,7 +57,7 @@ PREVIEW_SAMPLES = 4
 SHORE_POINT = (5.0, -6.0)
 SHORE_INLAND = (0.958, -0.288)  # unit normal to the waterline, pointing up the beach
 BED_SIZE = 140.0  # more than the water: depth is measured under every point of it
-BED_VERTICES = 281  # 0.5 m apart
+BED_VERTICES = 141  # 1 m apart: the slopes are gentle, and the renders pay for every vertex
 PIER_XS = (-0.5, 1.5, 3.5, 5.5)  # posts in two rows, from the shallows up to the waterline
 PIER_YS = (-3.6, -2.4)
 POST_RADIUS = 0.15
@@ -407,7 +407,7 @@ _FONT = {
     "H": "101101111101101",
     "I": "111010010010111",
     "L": "100100100100111",
-    "M": "101111111101101",
+    "M": "101111101101101",
     "N": "101111111111101",
     "O": "010101101101010",
     "P": "110101110100100",

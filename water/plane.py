@@ -123,10 +123,11 @@ def add_water(
     `overrides` are preset keys (`size`, `wave_height`, `resolution`, `waves`,
     `shading`, ...) that replace the preset's values; every value is clamped
     into range. `matrix` (a 4x4 world matrix) wins over `location` and `rotation`.
-    With `see_surroundings`, when objects reach below the new water, it gets its
-    surroundings (`surroundings.py`) for depth colour and shore foam, and the
-    grid the points the waterline needs; with nothing below, nothing is added
-    (the panel's Surroundings button adds them later).
+    With `see_surroundings`, when the values colour by depth or draw foam
+    (`uses_surroundings`) and objects reach below the new water, it gets its
+    surroundings (`surroundings.py`) and the grid the points the waterline
+    needs; otherwise nothing is added (the seeds' lake stays one quad; the
+    panel's Surroundings button adds them later).
     Atomic: on any failure everything it made is removed and `AddWaterError`
     (one line) is raised; PresetError for an unknown preset or value.
     """
@@ -144,7 +145,8 @@ def add_water(
         if matrix is None:
             matrix = Matrix.LocRotScale(Vector(location), Euler(rotation), None)
         obj.matrix_world = matrix
-        around = surroundings.default_surroundings(obj, scene) if see_surroundings else []
+        wanted = see_surroundings and uses_surroundings(values)
+        around = surroundings.default_surroundings(obj, scene) if wanted else []
         if around:
             notes += _densify_for_surroundings(obj, values)
         material = dress_water(obj, scene, values)
@@ -155,6 +157,11 @@ def add_water(
         message = str(error).strip().splitlines()[-1] if str(error).strip() else type(error).__name__
         raise AddWaterError(f"adding water failed, nothing was added: {message}") from error
     return AddedWater(obj, material, values, changes, notes)
+
+
+def uses_surroundings(values):
+    """Whether water with these values shows its surroundings: colour by depth or shore foam."""
+    return any(channel > 0 for channel in values.get("absorption", ())) or values.get("foam_amount", 0) > 0
 
 
 def _densify_for_surroundings(obj, values):

@@ -127,6 +127,23 @@ def needed_resolution(size):
     return max(schema.RESOLUTION.min, min(wanted, schema.RESOLUTION.max, plane.max_resolution()))
 
 
+def coarse_grid_note(water):
+    """A sentence when `water`'s grid is too coarse to find a waterline within GRID_SPACING, else None.
+
+    Points are added when water is added, never to an existing mesh, which may be the user's.
+    """
+    low, high = rest_bounds(water)
+    size = float(max(high[0] - low[0], high[1] - low[1]))
+    side = math.isqrt(len(water.data.vertices))
+    needed = needed_resolution(size)
+    if side >= needed:
+        return None
+    return (
+        f"'{water.name}' has about {side} vertices a side; its waterline is found within "
+        f"{GRID_SPACING:g} m with {needed}: add the water again with Resolution {needed}"
+    )
+
+
 def _objects_seen(collection, seen=None):
     """Every object `collection` makes Collection Info see: its own, its children's and those of
     the collections its objects instance."""
