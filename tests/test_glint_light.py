@@ -21,7 +21,7 @@ from mathutils import Vector
 
 import harness
 
-pytestmark = pytest.mark.render
+pytestmark = [pytest.mark.render, pytest.mark.full_ci]
 
 SKY = np.array((0.3, 0.45, 0.8))
 FLOOR = (0.8, 0.15, 0.05)

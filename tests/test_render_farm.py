@@ -21,7 +21,7 @@ import pytest
 
 import harness
 
-pytestmark = pytest.mark.render
+pytestmark = [pytest.mark.render, pytest.mark.full_ci]
 
 FRAMES = (1, 13)
 

@@ -18,7 +18,7 @@ import pytest
 
 import harness
 
-pytestmark = pytest.mark.render
+pytestmark = [pytest.mark.render, pytest.mark.full_ci]
 
 IOR = 1.33
 ABSORPTION = (0.6, 0.15, 0.08)
