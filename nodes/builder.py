@@ -147,11 +147,25 @@ def _rebuild_nodes(tree, spec, images, nested):
         "output": tree.nodes.new("NodeGroupOutput"),
     }
     nodes["input"].location = (0, 0)
+    skipped = set()
     for key, description in spec.nodes.items():
-        nodes[key] = _new_node(tree, key, description, images, nested)
+        if _built_here(description):
+            nodes[key] = _new_node(tree, key, description, images, nested)
+        else:
+            skipped.add(key)
     for source, target in spec.links:
+        if {source.partition(":")[0], target.partition(":")[0]} & skipped:
+            continue
         tree.links.new(_socket(nodes, source, "outputs"), _socket(nodes, target, "inputs"))
     _layout(tree, nodes, spec)
+
+
+def _built_here(description):
+    """Whether this Blender builds the node (its `since` / `before` version gates)."""
+    version = bpy.app.version
+    return (description.since is None or version >= description.since) and (
+        description.before is None or version < description.before
+    )
 
 
 def _new_node(tree, key, description, images, nested):
@@ -188,7 +202,8 @@ def _layout(tree, nodes, spec):
     """Places nodes in their spec columns, top to bottom in spec order, so the flow reads left to right."""
     columns = {}
     for key, description in spec.nodes.items():
-        columns.setdefault(description.column, []).append(nodes[key])
+        if key in nodes:
+            columns.setdefault(description.column, []).append(nodes[key])
     last = max(columns, default=0) + 1
     for column, members in columns.items():
         y = 0

@@ -41,6 +41,10 @@ class Node:
     values: dict = field(default_factory=dict)
     label: str = ""
     group: str | None = None  # for ShaderNodeGroup: the name of the nested group
+    # Blender versions the node is built in: from `since` (inclusive) to `before` (exclusive).
+    # Links to a node that is not built are not made either.
+    since: tuple | None = None
+    before: tuple | None = None
 
 
 @dataclass(frozen=True)

@@ -59,6 +59,7 @@ from .spec import BUMP_IMAGE, FOAM_IMAGE, GroupSpec, Node, Socket, attribute, gr
 
 NAME = "Water Surface"
 VERSION = 3
+LIT_FOAM_SINCE = (4, 5, 0)  # the first LTS whose EEVEE keeps traced refraction beside a diffuse closure
 MAX_BUMP_LAYERS = 4
 FOAM_NAME = "Water Surface Foam Coverage"
 IOR = 1.33
@@ -509,7 +510,23 @@ SPEC = GroupSpec(
             label="refraction",
         ),
         "emission": Node("ShaderNodeEmission", 26, values={"Strength": 1.0}, label="dull colour + glint"),
-        "foam_bsdf": Node("ShaderNodeBsdfDiffuse", 26, values={"Roughness": 0.0}, label="foam: white, lit"),
+        # Lit foam from 4.5. EEVEE in 4.2 drops the traced refraction of a material that also has a
+        # diffuse closure (measured: what lies under the water vanishes), so there the foam is
+        # unlit white in the emission instead.
+        "foam_bsdf": Node(
+            "ShaderNodeBsdfDiffuse",
+            26,
+            values={"Roughness": 0.0},
+            label="foam: white, lit",
+            since=LIT_FOAM_SINCE,
+        ),
+        "foam_glow": Node(
+            "ShaderNodeVectorMath",
+            25,
+            {"operation": "ADD"},
+            label="+ foam, unlit (before 4.5)",
+            before=LIT_FOAM_SINCE,
+        ),
         "closures": Node("ShaderNodeAddShader", 27, label="reflection + refraction"),
         "final": Node("ShaderNodeAddShader", 28, label="+ emission"),
         "with_foam": Node("ShaderNodeAddShader", 29, label="+ foam"),
@@ -581,6 +598,10 @@ SPEC = GroupSpec(
         ("w_reflect:Value", "glossy:Color"),
         ("refract_color:Vector", "refraction:Color"),
         ("e_foam:Vector", "emission:Color"),
+        # Before 4.5 (no diffuse closure) the emission carries the foam too: this replaces the link above.
+        ("e_foam:Vector", "foam_glow:#0"),
+        ("foam_weight:Value", "foam_glow:#1"),
+        ("foam_glow:Vector", "emission:Color"),
         ("foam_weight:Value", "foam_bsdf:Color"),
         ("glossy:BSDF", "closures:#0"),
         ("refraction:BSDF", "closures:#1"),

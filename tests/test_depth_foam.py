@@ -220,7 +220,10 @@ def test_foam_is_lit_white_bright_in_sun_and_dim_in_shadow(lake, render):
     renders["no foam"] = _view(lake, render, 0, "water_sun")
     means = {name: pixels[strip].mean() for name, pixels in renders.items()}
     print("mean brightness of the foam strip:", {name: round(float(v), 3) for name, v in means.items()})
-    assert means["sun"] > means["shadow"] + 0.2, means
+    if bpy.app.version >= harness.addon("nodes.water_surface").LIT_FOAM_SINCE:
+        assert means["sun"] > means["shadow"] + 0.2, means
+    else:  # 4.2: unlit white foam (a diffuse closure would cost the traced refraction), as the README says
+        assert abs(means["sun"] - means["shadow"]) < 0.1 and means["shadow"] > means["no foam"] + 0.2, means
     assert means["sun"] > means["no foam"] + 0.2, means
     # White: lit foam is about as bright in each channel.
     sunlit = renders["sun"][strip].mean(axis=0)

@@ -36,6 +36,12 @@ def _material():
     return harness.addon("nodes.material")
 
 
+def _built(name):
+    """How many of the spec's nodes this Blender builds (some are built from or before a version)."""
+    builder = harness.addon("nodes.builder")
+    return sum(builder._built_here(node) for node in _nodes().SPECS[name].nodes.values())
+
+
 def _sockets(tree, in_out):
     return [i for i in tree.interface.items_tree if i.item_type == "SOCKET" and i.in_out == in_out]
 
@@ -106,7 +112,7 @@ def test_older_group_is_upgraded_in_place_keeping_material_values(scene):
     again = _material().water_group()
     assert again.as_pointer() == pointer
     assert again["water_surface_version"] == spec_version
-    assert "fresnel" in again.nodes and len(again.nodes) == len(_nodes().SPECS["Water Surface"].nodes) + 2
+    assert "fresnel" in again.nodes and len(again.nodes) == _built("Water Surface") + 2
     node = _material().water_node(material)
     assert node.inputs["Wave Height"].default_value == pytest.approx(0.7)
     assert node.outputs["Shader"].is_linked
