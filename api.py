@@ -9,8 +9,8 @@ whatever extension repository it was installed into::
     water_api = importlib.import_module(name + ".api")
     added = water_api.add_water(preset="windy_river", size=40)
 
-Bad input raises PresetError, AddWaterError, MirrorSetupError, NotEditableError
-(linked or overridden data, never edited) or FileJobError, each with a one-line
+Bad input raises PresetError, AddWaterError, MirrorSetupError, SurroundingsError,
+NotEditableError (linked or overridden data, never edited) or FileJobError, each with a one-line
 message; nothing is left half made.
 """
 
