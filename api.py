@@ -9,7 +9,7 @@ whatever extension repository it was installed into::
     water_api = importlib.import_module(name + ".api")
     added = water_api.add_water(preset="windy_river", size=40)
 
-Bad input raises PresetError, AddWaterError, MirrorSetupError, SurroundingsError,
+Bad input raises PresetError, AddWaterError, MirrorSetupError, SurroundingsError, PhysicalCausticsError,
 NotEditableError (linked or overridden data, never edited) or FileJobError, each with a one-line
 message; nothing is left half made.
 """
@@ -22,12 +22,14 @@ from . import presets as _presets
 from .presets import PresetError
 from .water import files as _files
 from .water import mirror as _mirror
+from .water import physical_caustics as _physical_caustics
 from .water import surroundings as _surroundings
 from .water import values as _values
 from .water import waves as _waves
 from .water.editable import NotEditableError, check_editable
 from .water.files import FileJobError
 from .water.mirror import MirrorSetupError
+from .water.physical_caustics import PhysicalCausticsError
 from .water.plane import AddedWater, AddWaterError
 from .water.plane import add_water as _add_water
 from .water.repair import needs_repair
@@ -39,6 +41,7 @@ __all__ = (
     "FileJobError",
     "MirrorSetupError",
     "NotEditableError",
+    "PhysicalCausticsError",
     "PresetError",
     "add_water",
     "add_water_to_file",
@@ -48,6 +51,8 @@ __all__ = (
     "preset_ids",
     "read_values",
     "render_file",
+    "remove_surroundings",
+    "set_physical_caustics",
     "set_surroundings",
     "setup_mirror",
     "SurroundingsError",
@@ -63,11 +68,14 @@ def add_water(
     collection: bpy.types.Collection | None = None,
     mirror_setup: bool = True,
     name: str = "Water",
+    see_surroundings: bool = True,
     **values: object,
 ) -> AddedWater:
     """Adds water to `scene` (default: the context's) from `preset`, `values` (preset keys such
     as size, wave_height, waves) on top. Lake water gets the mirror set-up unless
-    `mirror_setup` is False. All or nothing: AddWaterError leaves no trace."""
+    `mirror_setup` is False. Every water gets its surroundings collection (the objects reaching
+    below it) and the points its waterline needs, unless `see_surroundings` is False.
+    All or nothing: AddWaterError leaves no trace."""
     return _add_water(
         scene,
         preset=preset,
@@ -76,6 +84,7 @@ def add_water(
         collection=collection,
         mirror_setup=mirror_setup,
         name=name,
+        see_surroundings=see_surroundings,
         **values,
     )
 
@@ -109,6 +118,24 @@ def set_surroundings(
     against the add-on's own collection gathered again from the objects reaching below it.
     Returns what changed; SurroundingsError for a collection holding the water itself."""
     return _surroundings.ensure_surroundings(water, scene or bpy.context.scene, collection=collection)
+
+
+def remove_surroundings(water: bpy.types.Object) -> list[str]:
+    """Takes the surroundings off `water` (its sample modifier, its cache, the add-on's own
+    collection; a collection of yours is left alone), e.g. to apply its other modifiers.
+    Returns what changed."""
+    return _surroundings.remove_surroundings(water)
+
+
+def set_physical_caustics(
+    water: bpy.types.Object, enable: bool = True, scene: bpy.types.Scene | None = None
+) -> list[str]:
+    """Switches Cycles' own caustics (manifold next-event estimation) on for lake `water`, or off
+    again, putting back what was changed. Returns the changes; PhysicalCausticsError says why not."""
+    scene = scene or bpy.context.scene
+    if enable:
+        return _physical_caustics.enable(water, scene)
+    return _physical_caustics.disable(water, scene)
 
 
 def read_values(water: bpy.types.Object) -> dict:

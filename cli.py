@@ -91,6 +91,9 @@ def _parser():
     add.add_argument("--preset", default="lake", help="preset id (see `presets`), default lake")
     add.add_argument("--scene", help="scene name (default: the file's active scene)")
     add.add_argument("--no-mirror", action="store_true", help="skip the mirror set-up")
+    add.add_argument(
+        "--no-surroundings", action="store_true", help="no surroundings collection (the lake stays one quad)"
+    )
     for field in schema.FIELDS:
         option = "--" + field.key.replace("_", "-")
         if field.kind == "bool":
@@ -150,6 +153,7 @@ def main(argv):
                 scene=args.scene,
                 preset=args.preset,
                 mirror_setup=not args.no_mirror,
+                see_surroundings=not args.no_surroundings,
                 keep_session=False,  # the command's session is thrown away: no snapshot to restore
                 **values,
             )

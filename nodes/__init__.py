@@ -1,6 +1,6 @@
 """Node groups and the water material, each group described as data and built by one builder."""
 
-from . import bump_uv, ocean, surroundings, water_surface, water_waves, wind_frame
+from . import bump_uv, caustics, ocean, surroundings, water_surface, water_waves, wind_frame
 from .builder import NodeGroupError, ensure_group
 
 SPECS = {
@@ -8,6 +8,7 @@ SPECS = {
     for spec in (
         wind_frame.SPEC,
         bump_uv.SPEC,
+        caustics.SPEC,
         water_surface.SPEC,
         water_waves.SPEC,
         ocean.NORMAL_SPEC,

@@ -9,15 +9,19 @@
 * A newer one (saved by a newer add-on) is left alone, so the file keeps working.
 * A group half-built when building fails is removed, and the error names it.
 * Image slots: `BUMP_IMAGE` nodes get the image asked for (and the group is found by it);
-  `FOAM_IMAGE` nodes get the add-on's foam tile, never part of how a group is found. A reused
-  group whose image of either kind was deleted is given the one asked for.
+  `FOAM_IMAGE` and `CAUSTICS_IMAGE` nodes get the add-on's own tiles, never part of how a
+  group is found. A reused group whose image of any kind was deleted is given the one asked for.
 """
 
 import bpy
 
+from .caustics_image import ensure_caustics_image
 from .foam_image import ensure_foam_image
 from .ownership import VERSION_KEY, mark, owned
-from .spec import BUMP_IMAGE, FOAM_IMAGE
+from .spec import BUMP_IMAGE, CAUSTICS_IMAGE, FOAM_IMAGE
+
+# The add-on's own generated tiles: a slot for one is filled with it, made when needed.
+OWN_TILES = {FOAM_IMAGE: ensure_foam_image, CAUSTICS_IMAGE: ensure_caustics_image}
 
 COLUMN_WIDTH = 240
 ROW_GAP = 40
@@ -37,11 +41,13 @@ def ensure_group(spec, specs, name=None, image=None, foam=None):
     the add-on's packed foam tile, made when needed); `name` (default: the spec's) names a new tree.
     """
     lookup = {**specs, **{included.name: included for included in spec.includes}}
-    if foam is None and spec.slots(FOAM_IMAGE):
-        foam = ensure_foam_image()
+    tiles = {placeholder: foam if placeholder == FOAM_IMAGE else None for placeholder in OWN_TILES}
+    for placeholder, make in OWN_TILES.items():
+        if tiles[placeholder] is None and spec.slots(placeholder):
+            tiles[placeholder] = make()
     nested = {group: ensure_group(lookup[group], lookup, foam=foam) for group in spec.nested_groups()}
     tree = find_group(spec, image)
-    images = {BUMP_IMAGE: image, FOAM_IMAGE: foam}
+    images = {BUMP_IMAGE: image, **tiles}
     if tree is not None and tree.get(VERSION_KEY, 0) >= spec.version:
         _adopt_images(tree, spec, images)
         return tree
@@ -90,7 +96,7 @@ def find_group(spec, image=None):
 
 
 def _adopt_images(tree, spec, images):
-    """Gives a reused group whose image (bump or foam) was deleted the one it is asked for."""
+    """Gives a reused group whose image (bump or a tile) was deleted the one it is asked for."""
     for placeholder, image in images.items():
         nodes = _slot_nodes(tree, spec, placeholder)
         if placeholder == BUMP_IMAGE and not nodes:

@@ -156,19 +156,27 @@ def glint_sun(material):
 
 
 def drive_sun(material, sun):
-    """`Sun Direction` follows `sun`'s -Z axis (the way its light travels), `Sun Color` its colour.
+    """`Sun Direction` follows `sun`'s -Z axis (the way its light travels), `Sun Color` its colour,
+    `Sun Lit` whether it renders (caustics need it).
 
-    With `sun` None they are the reference's default light, white.
+    With `sun` None they are the reference's default light, white, and `Sun Lit` is 0.
     """
     node = water_node(material)
     direction, color = node.inputs["Sun Direction"], node.inputs["Sun Color"]
+    lit = node.inputs.get("Sun Lit")  # caustics need a sun; absent from groups before version 4
     for i in range(3):
         direction.driver_remove("default_value", i)
         color.driver_remove("default_value", i)
+    if lit is not None:
+        lit.driver_remove("default_value")
     if sun is None:
         direction.default_value = water_surface.DEFAULT_SUN
         color.default_value = (1.0, 1.0, 1.0, 1.0)
+        if lit is not None:
+            lit.default_value = 0.0
         return
+    if lit is not None:
+        drive_socket(lit, None, "1 - h", [("h", "OBJECT", sun, "hide_render")])
     for i in range(3):
         # RNA stores matrices by column: matrix_world[2] is the local Z axis in world space.
         drive_socket(direction, i, "-z", [("z", "OBJECT", sun, f"matrix_world[2][{i}]")])

@@ -15,6 +15,8 @@ from dataclasses import dataclass, field
 BUMP_IMAGE = "<bump image>"
 # Stands for the add-on's foam tile (`ensure_group(..., foam=...)`, default: `foam_image.py`'s own).
 FOAM_IMAGE = "<foam image>"
+# Stands for the add-on's caustic tile (`caustics_image.py`'s own).
+CAUSTICS_IMAGE = "<caustics image>"
 
 
 @dataclass(frozen=True)
@@ -65,7 +67,8 @@ class GroupSpec:
         return [node.group for node in self.nodes.values() if node.group]
 
     def slots(self, placeholder):
-        """Keys of the nodes with `placeholder` (`BUMP_IMAGE`, `FOAM_IMAGE`) among their properties."""
+        """Keys of the nodes with `placeholder` (`BUMP_IMAGE`, `FOAM_IMAGE`, `CAUSTICS_IMAGE`) among
+        their properties."""
         return [key for key, node in self.nodes.items() if placeholder in node.props.values()]
 
 

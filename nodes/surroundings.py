@@ -79,7 +79,7 @@ from .spec import GroupSpec, Node, Socket, math, vmath
 NAME = "Water Surroundings"
 VERSION = 2  # 2: keeps FLOOR_ATTRIBUTE for `Water Surroundings Sample`
 SAMPLE_NAME = "Water Surroundings Sample"
-SAMPLE_VERSION = 1
+SAMPLE_VERSION = 2  # 2: stores UV_SIZE_ATTRIBUTE for the caustics' parallax
 CACHE_INPUT = "Cache"
 HEIGHT_ATTRIBUTE = ".water_height"  # signed height h (below), on the cache's geometry only
 FLOOR_ATTRIBUTE = ".water_floor"  # z of what is below (object units), on the cache's geometry only
@@ -87,6 +87,7 @@ NO_FLOOR = -1.0e30  # `FLOOR_ATTRIBUTE` where nothing is below: any depth from i
 DEPTH_ATTRIBUTE = "water_depth"
 SHORE_ATTRIBUTE = "water_shore_distance"
 FLAG_ATTRIBUTE = "water_surroundings"
+UV_SIZE_ATTRIBUTE = "water_uv_size"  # object-space metres across the water's UV 0..1 (its rest width)
 MIRRORED_ATTRIBUTE = ".water_mirrored"  # on the realized surroundings only, never on the water
 FAR = 1000.0  # metres: "nothing there"
 RAY_LENGTH = 1.0e6  # object units: rays reach everything in any sane scene
@@ -427,6 +428,11 @@ def _build_sample():
         "store_depth": _store(DEPTH_ATTRIBUTE, 10, f"store '{DEPTH_ATTRIBUTE}'"),
         "store_shore": _store(SHORE_ATTRIBUTE, 11, f"store '{SHORE_ATTRIBUTE}'"),
         "store_flag": _store(FLAG_ATTRIBUTE, 12, f"store '{FLAG_ATTRIBUTE}'"),
+        # The rest grid's width: the UV runs 0..1 across it, so the shader turns metres into UV.
+        "bounds": Node("GeometryNodeBoundBox", 3, label="rest grid bounds"),
+        "extent": vmath("SUBTRACT", 4, "max - min"),
+        "extent_xyz": Node("ShaderNodeSeparateXYZ", 5, label="width"),
+        "store_uv_size": _store(UV_SIZE_ATTRIBUTE, 13, f"store '{UV_SIZE_ATTRIBUTE}'"),
     }
     links = [
         ("input:Cache", "cache:Object"),
@@ -482,7 +488,13 @@ def _build_sample():
         ("shore_valid:Output", "store_shore:Value"),
         ("store_shore:Geometry", "store_flag:Geometry"),
         ("flag_valid:Output", "store_flag:Value"),
-        ("store_flag:Geometry", "output:Geometry"),
+        ("cache:Geometry", "bounds:Geometry"),
+        ("bounds:Max", "extent:#0"),
+        ("bounds:Min", "extent:#1"),
+        ("extent:Vector", "extent_xyz:Vector"),
+        ("store_flag:Geometry", "store_uv_size:Geometry"),
+        ("extent_xyz:X", "store_uv_size:Value"),
+        ("store_uv_size:Geometry", "output:Geometry"),
     ]
     return nodes, tuple(links)
 
@@ -494,7 +506,8 @@ SAMPLE_SPEC = GroupSpec(
     version=SAMPLE_VERSION,
     description=(
         f"Reads '{DEPTH_ATTRIBUTE}', '{SHORE_ATTRIBUTE}' and '{FLAG_ATTRIBUTE}' from the water's "
-        f"surroundings cache (its '{NAME}' modifier), point by point, the depth following the waves"
+        f"surroundings cache (its '{NAME}' modifier), point by point, the depth following the waves; "
+        f"stores '{UV_SIZE_ATTRIBUTE}', the rest grid's width"
     ),
     inputs=(
         Socket("Geometry", "NodeSocketGeometry"),

@@ -54,11 +54,11 @@ picture stays the composition of the views; 6 shows `T` and 7 the foam coverage,
 
 import math as _math
 
-from . import bump_uv, foam_map, wind_frame
+from . import bump_uv, caustics, foam_map, wind_frame
 from .spec import BUMP_IMAGE, FOAM_IMAGE, GroupSpec, Node, Socket, attribute, group_node, math, vmath
 
 NAME = "Water Surface"
-VERSION = 3
+VERSION = 4  # 4: caustics
 LIT_FOAM_SINCE = (4, 5, 0)  # the first LTS whose EEVEE keeps traced refraction beside a diffuse closure
 MAX_BUMP_LAYERS = 4
 FOAM_NAME = "Water Surface Foam Coverage"
@@ -78,6 +78,7 @@ DEBUG_VIEWS = (
     (5, "GLINT", "Glint", "The sun glint alone, unlit, in the sun's colour"),
     (6, "TRANSMITTANCE", "Transmittance", "T = exp(-Absorption x path) per channel, unlit"),
     (7, "FOAM", "Foam", "The foam coverage as unlit grey"),
+    (8, "CAUSTICS", "Caustics", "The caustic factor on what is seen through the water, unlit"),
 )
 
 # The reference's default light, (-1, -1, -1) in XNA's Y-up world, is (-1, 1, -1) in Blender.
@@ -160,7 +161,7 @@ INPUTS = (
         min=0,
         max=len(DEBUG_VIEWS) - 1,
         tooltip="0 final, 1 reflection, 2 refraction, 3 Fresnel F, 4 bump normal, 5 glint, "
-        "6 transmittance, 7 foam",
+        "6 transmittance, 7 foam, 8 caustics",
     ),
     Socket(
         "Absorption",
@@ -193,12 +194,14 @@ INPUTS = (
         subtype="FACTOR",
         tooltip="Shore and contact foam, lit by the scene (0 = none; needs the surroundings)",
     ),
+    caustics.CAUSTICS_INPUT,
+    caustics.CAUSTICS_SCALE_INPUT,
+    caustics.SUN_LIT_INPUT,
 )
 
 FOAM_INPUTS = (
     Socket("Vector", "NodeSocketVector", tooltip="Where the foam tile is read", hide_value=True),
-    INPUTS[-2],
-    INPUTS[-1],
+    *(socket for socket in INPUTS if socket.name in ("Foam Width", "Foam Amount")),
 )
 
 
@@ -278,7 +281,8 @@ def _weight_nodes():
         "one_minus_f": math("SUBTRACT", 20, "1 - F", a=1.0),
         "w_reflect": math("MULTIPLY_ADD", 22, "reflection weight"),
         "w_refract": math("MULTIPLY_ADD", 22, "refraction weight"),
-        "refract_color": vmath("SCALE", 23, "T x refraction weight"),
+        "through": vmath("MULTIPLY", 22, "T x caustics"),
+        "refract_color": vmath("SCALE", 23, "T x caustics x refraction weight"),
         "dull_part": vmath("SCALE", 19, "Dull Blend x Dull Color"),
         "lit": vmath("ADD", 20, "+ glint"),
         "e_final": vmath("SCALE", 22, "if final, x (1 - foam)"),
@@ -288,6 +292,7 @@ def _weight_nodes():
         "e_scatter": vmath("MULTIPLY_ADD", 24, "+ scatter x refraction weight"),
         "e_transmit": vmath("MULTIPLY_ADD", 24, "+ T if view 6"),
         "e_foam": vmath("MULTIPLY_ADD", 24, "+ foam if view 7"),
+        "e_caustics": vmath("MULTIPLY_ADD", 25, "+ caustics if view 8"),
     }
     links += [
         (previous, "is_final:#1"),
@@ -306,7 +311,9 @@ def _weight_nodes():
         ("keep:Value", "w_refract:#0"),
         ("fresnel:Value", "w_refract:#1"),
         ("is_2:Value", "w_refract:#2"),
-        ("transmit:Vector", "refract_color:#0"),
+        ("transmit:Vector", "through:#0"),
+        ("caustics:Factor", "through:#1"),
+        ("through:Vector", "refract_color:#0"),
         ("w_refract:Value", "refract_color:Scale"),
         ("input:Dull Color", "dull_part:#0"),
         ("input:Dull Blend", "dull_part:Scale"),
@@ -332,6 +339,9 @@ def _weight_nodes():
         ("foam:Coverage", "e_foam:#0"),
         ("is_7:Value", "e_foam:#1"),
         ("e_transmit:Vector", "e_foam:#2"),
+        ("caustics:Factor", "e_caustics:#0"),
+        ("is_8:Value", "e_caustics:#1"),
+        ("e_foam:Vector", "e_caustics:#2"),
     ]
     return nodes, links
 
@@ -493,6 +503,8 @@ SPEC = GroupSpec(
         **_DEPTH_NODES,
         # Shore foam: its coverage, read at the bump's scrolled UV (so it drifts with the wind).
         "foam": group_node(FOAM_NAME, 13, "foam coverage c"),
+        # Caustics: the factor on what the refraction shows (`caustics.py`).
+        "caustics": group_node(caustics.NAME, 13, "caustic factor"),
         **_WEIGHT_NODES,
         # The closures, weighted, the one emission and the foam.
         "glossy": Node(
@@ -592,14 +604,22 @@ SPEC = GroupSpec(
         ("bump_uv:Vector", "foam:Vector"),
         ("input:Foam Width", "foam:Foam Width"),
         ("input:Foam Amount", "foam:Foam Amount"),
+        ("bump_uv:Vector", "caustics:Vector"),
+        ("input:Wave Length", "caustics:Wave Length"),
+        ("input:Wind Direction", "caustics:Wind Direction"),
+        ("input:Sun Direction", "caustics:Sun Direction"),
+        ("input:Absorption", "caustics:Absorption"),
+        ("input:Caustics", "caustics:Caustics"),
+        ("input:Caustics Scale", "caustics:Caustics Scale"),
+        ("input:Sun Lit", "caustics:Sun Lit"),
         *_WEIGHT_LINKS,
         ("normal_h:Normal", "glossy:Normal"),
         ("normal_h:Normal", "refraction:Normal"),
         ("w_reflect:Value", "glossy:Color"),
         ("refract_color:Vector", "refraction:Color"),
-        ("e_foam:Vector", "emission:Color"),
+        ("e_caustics:Vector", "emission:Color"),
         # Before 4.5 (no diffuse closure) the emission carries the foam too: this replaces the link above.
-        ("e_foam:Vector", "foam_glow:#0"),
+        ("e_caustics:Vector", "foam_glow:#0"),
         ("foam_weight:Value", "foam_glow:#1"),
         ("foam_glow:Vector", "emission:Color"),
         ("foam_weight:Value", "foam_bsdf:Color"),

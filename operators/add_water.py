@@ -60,9 +60,19 @@ class OBJECT_OT_water_surface_add(object_utils.AddObjectHelper, bpy.types.Operat
     scatter_color: field_property("scatter_color")
     foam_width: field_property("foam_width")
     foam_amount: field_property("foam_amount")
+    caustics: field_property("caustics")
+    caustics_scale: field_property("caustics_scale")
     mirror_setup: bpy.props.BoolProperty(
         name="Mirror Set-Up",
         description="Turn on EEVEE ray tracing and add a planar probe so the water shows a true mirror",
+        default=True,
+    )
+    see_surroundings: bpy.props.BoolProperty(
+        name="Surroundings",
+        description=(
+            "Gather the objects that reach below the water into its own surroundings collection and "
+            "measure depth and shore distance from them (adds the points the waterline needs)"
+        ),
         default=True,
     )
     ran: bpy.props.BoolProperty(options={"HIDDEN", "SKIP_SAVE"})
@@ -80,6 +90,7 @@ class OBJECT_OT_water_surface_add(object_utils.AddObjectHelper, bpy.types.Operat
         for key in KEYS:
             layout.prop(self, key)
         layout.prop(self, "mirror_setup")
+        layout.prop(self, "see_surroundings")
         layout.separator()
         layout.prop(self, "align")
         layout.prop(self, "location")
@@ -113,6 +124,7 @@ class OBJECT_OT_water_surface_add(object_utils.AddObjectHelper, bpy.types.Operat
                 preset=preset.id,
                 collection=context.collection,
                 mirror_setup=self.mirror_setup,
+                see_surroundings=self.see_surroundings,
                 matrix=object_utils.add_object_align_init(context, self),
                 **given,
             )

@@ -95,6 +95,8 @@ FIELDS = (
     _from_socket("scatter_color", "Scatter Color", "color"),
     _from_socket("foam_width", "Foam Width", "float"),
     _from_socket("foam_amount", "Foam Amount", "float"),
+    _from_socket("caustics", "Caustics", "float"),
+    _from_socket("caustics_scale", "Caustics Scale", "float"),
 )
 BY_KEY = {field.key: field for field in FIELDS}
 # The shader's values: everything but the plane's size.

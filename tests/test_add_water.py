@@ -80,10 +80,11 @@ def test_adding_water_three_times_reuses_the_group_and_the_bump_image(scene):
     assert len(waters) == 3
     assert len({o.active_material.name for o in waters}) == 3, "each water has its own values"
     groups = sorted(g.name for g in bpy.data.node_groups)
-    lake = ["Water Surface", "Water Surface Bump UV", "Water Surface Foam Coverage"]
-    lake.append("Water Surface Wind Frame")
-    assert groups == lake, "each group once, no .001 (and no surroundings: nothing stands in the water)"
-    assert sorted(i.name for i in bpy.data.images) == ["Water Surface Bump", "Water Surface Foam"]
+    lake = ["Water Surface", "Water Surface Bump UV", "Water Surface Caustics", "Water Surface Foam Coverage"]
+    lake += ["Water Surface Wind Frame", "Water Surroundings", "Water Surroundings Sample"]
+    assert groups == lake, "each group once, no .001 (each water has its surroundings)"
+    images = sorted(i.name for i in bpy.data.images)
+    assert images == ["Water Surface Bump", "Water Surface Caustics", "Water Surface Foam"]
 
 
 def test_undo_removes_the_water_and_its_set_up(scene):
@@ -91,7 +92,7 @@ def test_undo_removes_the_water_and_its_set_up(scene):
     bpy.ops.ed.undo_push(message="before water")
     before = {o.name for o in bpy.data.objects}
     bpy.ops.object.water_surface_add("EXEC_DEFAULT", True)  # with an undo step, as from the menu
-    assert {o.name for o in bpy.data.objects} - before == {"Water", "Water Mirror"}
+    assert {o.name for o in bpy.data.objects} - before == {"Water", "Water Mirror", "Water Surroundings"}
     bpy.ops.ed.undo()
     assert {o.name for o in bpy.data.objects} == before
     assert not bpy.context.scene.eevee.use_raytracing

@@ -297,7 +297,7 @@ def test_the_material_reads_few_geometry_attributes(scene):
                 yield from attributes(node.node_tree)
 
     names = set(attributes(material.node_tree))
-    assert names == {"water_depth", "water_shore_distance", "water_surroundings"}
+    assert names == {"water_depth", "water_shore_distance", "water_surroundings", "water_uv_size"}
     assert len(names | {"UVMap", "water_normal"}) <= 14
 
 

@@ -25,6 +25,9 @@ EXPECTED_INPUTS = {
     "Scatter Color": (0.0, 0.05, 0.06, 1.0),
     "Foam Width": 1.0,
     "Foam Amount": 0.0,
+    "Caustics": 0.0,
+    "Caustics Scale": 1.0,
+    "Sun Lit": 1.0,
 }
 
 
@@ -59,7 +62,8 @@ def test_group_interface_is_the_reference_model(scene):
         assert value == pytest.approx(default, abs=1e-5), name
         assert len(inputs[name].description) > 10, f"{name} has no tooltip"
     assert inputs["Debug View"].socket_type == "NodeSocketInt"
-    assert (inputs["Debug View"].min_value, inputs["Debug View"].max_value) == (0, 7)
+    assert (inputs["Debug View"].min_value, inputs["Debug View"].max_value) == (0, 8)
+    assert (inputs["Caustics"].min_value, inputs["Caustics Scale"].min_value) == (0, pytest.approx(0.05))
     assert inputs["Foam Width"].min_value == pytest.approx(0.01)
     assert (inputs["Foam Amount"].min_value, inputs["Foam Amount"].max_value) == (0, 1)
     assert inputs["Wave Length"].min_value > 0
@@ -75,10 +79,15 @@ def test_building_again_reuses_groups_and_image(scene):
         _material().make_water_material(name, scene=scene)
     assert {g.name: g.as_pointer() for g in bpy.data.node_groups} == groups
     assert not [g.name for g in bpy.data.node_groups if g.name[-4:-3] == "." and g.name[-3:].isdigit()]
-    assert sorted(i.name for i in bpy.data.images) == ["Water Surface Bump", "Water Surface Foam"]
+    assert sorted(i.name for i in bpy.data.images) == [
+        "Water Surface Bump",
+        "Water Surface Caustics",
+        "Water Surface Foam",
+    ]
     assert sorted(groups) == [
         "Water Surface",
         "Water Surface Bump UV",
+        "Water Surface Caustics",
         "Water Surface Foam Coverage",
         "Water Surface Wind Frame",
     ]

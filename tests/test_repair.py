@@ -105,7 +105,7 @@ def _assert_drivers_on_their_sockets(material):
     tree = material.node_tree
     paths = [f.data_path.rpartition(".")[0] for f in tree.animation_data.drivers]
     driven = sorted(tree.path_resolve(path).name for path in paths)
-    assert driven == ["Sun Color"] * 3 + ["Sun Direction"] * 3 + ["Time"]
+    assert driven == ["Sun Color"] * 3 + ["Sun Direction"] * 3 + ["Sun Lit", "Time"]
     assert harness.addon("nodes.material").glint_sun(material) == bpy.data.objects["Key Sun"]
 
 

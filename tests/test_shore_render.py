@@ -344,6 +344,54 @@ def test_cycles_shows_the_same_depth_colour_and_foam(scene, render):
     done()
 
 
+# 5. A post that moves takes its foam with it.
+
+
+def test_a_keyframed_post_moves_its_foam_ring_between_two_frames(scene, render):
+    """Nothing is measured by hand: the render at each frame shows foam around the post where it
+    stands then (the cache measured again by the depsgraph) and none where it stood before."""
+    done = _timed("test 5")
+    scene.render.resolution_x = scene.render.resolution_y = 64
+    harness.set_world_color(scene, (0.05, 0.07, 0.1))
+    start, end = (-2.5, 1.5), (2.0, -1.5)
+    post = _post(scene, harness.emission_material("Post", (1.0, 0.0, 0.0)))
+    post.location = (*start, -2.4)  # its top 0.1 m above the surface: it hides little of its ring
+    post.keyframe_insert("location", frame=1)
+    post.location = (*end, -2.4)
+    post.keyframe_insert("location", frame=10)
+    scene.frame_set(1)
+    added = harness.addon("api").add_water(
+        scene, size=LAKE_SIZE, mirror_setup=False, foam_amount=0.7, foam_width=0.8, wave_length=0.5
+    )
+    node = _water_node(added.object)
+    node.inputs["Debug View"].default_value = 7
+    camera = harness.add_camera(scene, (0.0, -3.0, 12.0), (0.0, 0.0, 0.0))
+    origin, directions = harness.pixel_rays(scene, camera)
+    hits, ok = harness.hit_plane_z(origin, directions)
+
+    def ring(centre):
+        """Pixels whose water point lies 0.15-0.4 m outside the post's side at `centre`."""
+        distance = np.hypot(hits[..., 0] - centre[0], hits[..., 1] - centre[1]) - POST_RADIUS
+        return ok & (distance > 0.15) & (distance < 0.4)
+
+    coverage = {}
+    assert ring(start).sum() > 12 and ring(end).sum() > 12
+    for frame in (1, 10):
+        scene.frame_set(frame)
+        foam = render(scene, f"foam_{frame}", exr=True)[..., 0]
+        coverage[frame] = {
+            name: float(foam[ring(at)].mean()) for name, at in (("start", start), ("end", end))
+        }
+        print(
+            f"frame {frame}: foam coverage around the start {coverage[frame]['start']:.3f}, "
+            f"around the end {coverage[frame]['end']:.3f}"
+        )
+    assert ring(start).sum() > 12 and ring(end).sum() > 12
+    assert coverage[1]["start"] > 0.3 and coverage[1]["end"] < 0.02, coverage
+    assert coverage[10]["end"] > 0.3 and coverage[10]["start"] < 0.02, coverage
+    done()
+
+
 # 4. The command line.
 
 

@@ -587,12 +587,27 @@ def test_a_failed_add_removes_the_cache(scene, surroundings, monkeypatch):
     assert {o.name for o in bpy.data.objects} == before
 
 
-def test_the_seeds_lake_over_a_bed_gathers_nothing_and_stays_one_quad(scene, surroundings):
-    """Surroundings cost points and a cache; water that shows neither depth nor foam gets none."""
-    _bed(scene)
-    added = harness.addon("api").add_water(scene, size=SIZE, mirror_setup=False)
-    assert len(added.object.data.vertices) == 4 and surroundings.surroundings_cache(added.object) is None
-    assert not [o for o in bpy.data.objects if surroundings.is_cache(o)]
-    shore = harness.addon("api").add_water(scene, size=SIZE, mirror_setup=False, absorption=(0.5, 0.1, 0.1))
-    assert surroundings.surroundings_cache(shore.object) is not None
-    assert len(shore.object.data.vertices) == surroundings.needed_resolution(SIZE) ** 2
+def test_every_water_gets_its_surroundings_collection_when_added(scene, surroundings):
+    """The seeds' lake too: over a bed it gathers the bed and gets the waterline's points; over
+    nothing its collection is empty, it stays one quad and reads far; opting out adds nothing."""
+    api = harness.addon("api")
+    alone = api.add_water(scene, size=SIZE, mirror_setup=False, location=(100.0, 0.0, 0.0))
+    collection = surroundings.surroundings_collection(alone.object)
+    assert collection is not None and len(collection.objects) == 0
+    assert collection not in scene.collection.children_recursive, "kept out of the scene's hierarchy"
+    assert len(alone.object.data.vertices) == 4
+    _co, values = _evaluate(alone.object)
+    assert (values["water_depth"] == FAR).all() and (values["water_shore_distance"] == FAR).all()
+
+    bed = _bed(scene)
+    lake = api.add_water(scene, size=SIZE, mirror_setup=False)
+    assert list(surroundings.surroundings_collection(lake.object).objects) == [bed]
+    assert len(lake.object.data.vertices) == surroundings.needed_resolution(SIZE) ** 2
+    co, values = _evaluate(lake.object)
+    wet = co[:, 0] < SHORE_X - 0.5
+    assert np.abs(values["water_depth"][wet] - SLOPE * (SHORE_X - co[wet, 0])).max() < 0.01
+    assert values["water_shore_distance"].min() == 0.0
+
+    plain = api.add_water(scene, size=SIZE, mirror_setup=False, see_surroundings=False)
+    assert len(plain.object.data.vertices) == 4 and surroundings.surroundings_cache(plain.object) is None
+    assert surroundings.surroundings_collection(plain.object) is None

@@ -12,8 +12,9 @@ sky and the suns again, but the floor is a sandy bed rising through the surface
 on the right into a beach, a short pier's posts stand in the shallows, and the
 water is the `tropical_shallows` preset. The bed and the posts are made before
 the water, so adding it gathers them as its surroundings: the water colours by
-depth (Beer-Lambert) and foams along the waterline and around what stands in it.
-Its insets are the transmittance and foam views (Debug View 6 and 7).
+depth (Beer-Lambert), foams along the waterline and around what stands in it, and
+the sun's caustics play on the sand under it. Its insets are the transmittance, foam and
+caustics views (Debug View 6, 7 and 8).
 
 All three are copied to docs/. Run through `tools/demo` (`tools/demo shore`
 renders only the shore image; `--preview` renders it small and quick, to out/
@@ -540,12 +541,12 @@ def render_strip(scene, camera, work, progress):
     return tile_strip(frames, labels)
 
 
-SHORE_VIEWS = ((6, "depth"), (7, "foam"))  # transmittance T and foam coverage, unlit
+SHORE_VIEWS = ((6, "depth"), (7, "foam"), (8, "caustics"))  # T, foam coverage, caustic factor: unlit
 
 
 def render_shore(bpy, work, progress, preview=False):
-    """The shore image: the final view with the depth (transmittance) and foam views as insets
-    (the preview: the final view alone)."""
+    """The shore image: the final view with the depth (transmittance), foam and caustics views as
+    insets (the preview: the final view alone)."""
     samples = PREVIEW_SAMPLES if preview else SAMPLES
     scene, water = build_shore_scene(bpy, *MAIN_SIZE, samples)
     if preview:

@@ -10,6 +10,7 @@ from ..nodes.material import bump_image, glint_sun, water_node
 from ..nodes.ocean_material import ocean_nodes
 from ..nodes.water_surface import DEBUG_VIEWS
 from ..nodes.water_waves import WAVE_COUNT
+from ..water import physical_caustics
 from ..water.editable import why_not_editable
 from ..water.mirror import find_probe
 from ..water.repair import needs_repair
@@ -31,6 +32,7 @@ _SECTIONS = (
     ("Tint", "COLOR", ("Dull Color", "Dull Blend")),
     ("Glint", "LIGHT_SUN", ("Specular Power", "Specular Strength")),
     ("Surroundings", "OUTLINER_COLLECTION", ("Absorption", "Scatter Color", "Foam Width", "Foam Amount")),
+    ("Caustics", "LIGHT_SUN", ("Caustics", "Caustics Scale")),
 )
 
 
@@ -101,6 +103,15 @@ class VIEW3D_PT_water_surface(bpy.types.Panel):
                     box.prop(socket, "default_value", text=name)
             if title == "Surroundings":
                 self.draw_surroundings(box, context.active_object)
+            if title == "Caustics":
+                on = physical_caustics.is_on(context.active_object)
+                op = box.operator(
+                    "object.water_physical_caustics",
+                    text=f"Physical Caustics (Cycles): {'On' if on else 'Off'}",
+                    icon="CHECKBOX_HLT" if on else "CHECKBOX_DEHLT",
+                )
+                if op is not None:  # None while the operator's poll refuses (linked water)
+                    op.enable = not on
             if title == "Glint":
                 sun = glint_sun(material)
                 box.operator(

@@ -180,7 +180,14 @@ def _keeps_session(job):
 
 @_keeps_session
 def add_water_to_file(
-    source, target, scene=None, preset="lake", mirror_setup=True, keep_session=True, **values
+    source,
+    target,
+    scene=None,
+    preset="lake",
+    mirror_setup=True,
+    keep_session=True,
+    see_surroundings=True,
+    **values,
 ):
     """Opens `source`, adds water to its scene, saves as `target`; returns what it did, in words.
 
@@ -198,7 +205,9 @@ def add_water_to_file(
     _open(source)
     scene = _scene(scene)
     try:
-        added = add_water(scene, preset=preset, mirror_setup=mirror_setup, **values)
+        added = add_water(
+            scene, preset=preset, mirror_setup=mirror_setup, see_surroundings=see_surroundings, **values
+        )
     except (PresetError, AddWaterError) as error:
         raise FileJobError(str(error)) from error
     try:

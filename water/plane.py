@@ -62,6 +62,10 @@ def dress_water(obj, scene, values):
         write_values(material, values)
     obj.data.materials.clear()
     obj.data.materials.append(material)
+    # Sunlight goes through water to what lies below (the seeds' refraction map saw the scene
+    # without the water); a refraction closure would otherwise shadow the bed in both engines.
+    # Cycles' physical caustics turn it back on (`physical_caustics.py`): they need the shadow.
+    obj.visible_shadow = False
     if values.get("waves"):
         waves.add_waves(obj)
     return material
@@ -123,11 +127,12 @@ def add_water(
     `overrides` are preset keys (`size`, `wave_height`, `resolution`, `waves`,
     `shading`, ...) that replace the preset's values; every value is clamped
     into range. `matrix` (a 4x4 world matrix) wins over `location` and `rotation`.
-    With `see_surroundings`, when the values colour by depth or draw foam
-    (`uses_surroundings`) and objects reach below the new water, it gets its
-    surroundings (`surroundings.py`) and the grid the points the waterline
-    needs; otherwise nothing is added (the seeds' lake stays one quad; the
-    panel's Surroundings button adds them later).
+    With `see_surroundings` (the default) the water gets its surroundings
+    (`surroundings.py`): its own collection holding the mesh objects that reach
+    below it (empty when there are none), measured by its cache; when something
+    is below, the grid gets the points the waterline needs. Without it nothing
+    is added and the lake stays one quad (the panel's Surroundings button adds
+    them later).
     Atomic: on any failure everything it made is removed and `AddWaterError`
     (one line) is raised; PresetError for an unknown preset or value.
     """
@@ -145,23 +150,16 @@ def add_water(
         if matrix is None:
             matrix = Matrix.LocRotScale(Vector(location), Euler(rotation), None)
         obj.matrix_world = matrix
-        wanted = see_surroundings and uses_surroundings(values)
-        around = surroundings.default_surroundings(obj, scene) if wanted else []
-        if around:
+        if see_surroundings and surroundings.default_surroundings(obj, scene):
             notes += _densify_for_surroundings(obj, values)
         material = dress_water(obj, scene, values)
-        changes = surroundings.ensure_surroundings(obj, scene) if around else []
+        changes = surroundings.ensure_surroundings(obj, scene) if see_surroundings else []
         changes += mirror.setup_mirror(scene, obj) if mirror_setup else []
     except Exception as error:
         _roll_back(scene, before)
         message = str(error).strip().splitlines()[-1] if str(error).strip() else type(error).__name__
         raise AddWaterError(f"adding water failed, nothing was added: {message}") from error
     return AddedWater(obj, material, values, changes, notes)
-
-
-def uses_surroundings(values):
-    """Whether water with these values shows its surroundings: colour by depth or shore foam."""
-    return any(channel > 0 for channel in values.get("absorption", ())) or values.get("foam_amount", 0) > 0
 
 
 def _densify_for_surroundings(obj, values):

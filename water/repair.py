@@ -25,7 +25,7 @@ from ..nodes.ocean_material import NORMAL_NODE, SKY_NODE, ocean_nodes
 from .editable import NotEditableError, check_editable, why_not_editable
 
 # Inputs the material drives: never kept or reset, driven again after a repair.
-_DRIVEN = {WATER_NODE: ("Time", "Sun Direction", "Sun Color"), NORMAL_NODE: ("Time",)}
+_DRIVEN = {WATER_NODE: ("Time", "Sun Direction", "Sun Color", "Sun Lit"), NORMAL_NODE: ("Time",)}
 
 
 class RepairError(ValueError):
