@@ -102,7 +102,7 @@ class AddedWater:
         if not mirror.needs_mirror(self.material):
             text += "; the ocean reflects the world's sky, no mirror set-up needed"
         elif self.changes:
-            text += "; mirror set-up: " + ", ".join(self.changes)
+            text += "; set-up: " + ", ".join(self.changes)
         return text
 
 
