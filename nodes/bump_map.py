@@ -74,6 +74,17 @@ def water_height_field(size: int = 256, seed: int = 7) -> np.ndarray:
     return height / height.std()
 
 
+def surface_normals(height: np.ndarray, strength: float = 1.0) -> np.ndarray:
+    """Unit normals (``size``, ``size``, 3) of a periodic height field, its RMS slope
+    ``strength * _RMS_SLOPE`` whatever the size (slopes in pixel units shrink as it grows)."""
+    # Periodic central differences keep the normals seamless across the tile edges.
+    dx = (np.roll(height, -1, axis=1) - np.roll(height, 1, axis=1)) * 0.5
+    dy = (np.roll(height, -1, axis=0) - np.roll(height, 1, axis=0)) * 0.5
+    scale = strength * _RMS_SLOPE / np.sqrt(np.mean(dx**2 + dy**2))
+    normal = np.stack([-dx * scale, -dy * scale, np.ones_like(height)], axis=-1)
+    return normal / np.linalg.norm(normal, axis=-1, keepdims=True)
+
+
 def water_normal_map(size: int = 256, seed: int = 7, strength: float = 1.0) -> np.ndarray:
     """Tangent-space normal map, float32 RGBA (``size``, ``size``, 4) in [0, 1], OpenGL style.
 
@@ -81,15 +92,7 @@ def water_normal_map(size: int = 256, seed: int = 7, strength: float = 1.0) -> n
     and y with the row index (up the image). R, G, B = normal x, y, z * 0.5 + 0.5 with z out of
     the surface; A = 1. ``strength`` scales the slopes (RMS slope 0.3 at 1; 0 gives flat).
     """
-    height = water_height_field(size, seed)
-    # Periodic central differences keep the normals seamless across the tile edges.
-    dx = (np.roll(height, -1, axis=1) - np.roll(height, 1, axis=1)) * 0.5
-    dy = (np.roll(height, -1, axis=0) - np.roll(height, 1, axis=0)) * 0.5
-    # Slopes in pixel units shrink as the size grows; normalising them keeps the look.
-    scale = strength * _RMS_SLOPE / np.sqrt(np.mean(dx**2 + dy**2))
-    normal = np.stack([-dx * scale, -dy * scale, np.ones_like(height)], axis=-1)
-    normal /= np.linalg.norm(normal, axis=-1, keepdims=True)
-
+    normal = surface_normals(water_height_field(size, seed), strength)
     rgba = np.ones((size, size, 4), dtype=np.float32)
     rgba[..., :3] = normal * 0.5 + 0.5
     return rgba

@@ -22,7 +22,7 @@ import functools
 
 import numpy as np
 
-from .bump_map import _RMS_SLOPE, water_height_field
+from .bump_map import surface_normals, water_height_field
 
 CAUSTICS_MAP_VERSION = 1
 """Bump whenever the generated pixels change, so packed images get made again."""
@@ -47,12 +47,7 @@ _RAYS = 2
 def _refracted_offsets(size: int, seed: int, depth: float) -> np.ndarray:
     """Where light falling straight down on each of ``size`` x ``size`` surface points lands,
     ``depth`` tile widths below, relative to the point, in texels (``size``, ``size``, 2: x, y)."""
-    height = water_height_field(size, seed)
-    dx = (np.roll(height, -1, axis=1) - np.roll(height, 1, axis=1)) * 0.5
-    dy = (np.roll(height, -1, axis=0) - np.roll(height, 1, axis=0)) * 0.5
-    scale = SLOPE_SCALE * _RMS_SLOPE / np.sqrt(np.mean(dx**2 + dy**2))
-    normal = np.stack([-dx * scale, -dy * scale, np.ones_like(height)], axis=-1)
-    normal /= np.linalg.norm(normal, axis=-1, keepdims=True)
+    normal = surface_normals(water_height_field(size, seed), SLOPE_SCALE)
     # Snell for the incoming direction (0, 0, -1): t = eta i + (eta cos_i - cos_t) n.
     eta = 1.0 / IOR
     cos_i = normal[..., 2]

@@ -77,3 +77,14 @@ def render(request, tmp_path):
 def project():
     """The helper that projects world points to pixels of the scene's camera."""
     return harness.world_to_pixel
+
+
+@pytest.fixture
+def addon_disabled_afterwards(addon):
+    """For tests that disable the add-on and turn auto-run off: both come back afterwards."""
+    import addon_utils  # after `harness.start()`, like every bpy import
+
+    yield
+    bpy.context.preferences.filepaths.use_scripts_auto_execute = True
+    addon_utils.enable(harness.ADDON_MODULE, default_set=True)
+    assert hasattr(bpy.types, "OBJECT_OT_water_surface_add")

@@ -310,14 +310,6 @@ def test_the_tile_is_the_bump_surface_focusing_light(addon):
     assert correlation > 0.8
 
 
-@pytest.fixture
-def addon_disabled_afterwards(addon):
-    yield
-    bpy.context.preferences.filepaths.use_scripts_auto_execute = True
-    addon_utils.enable(harness.ADDON_MODULE, default_set=True)
-    assert hasattr(bpy.types, "OBJECT_OT_water_surface_add")
-
-
 @pytest.mark.render
 def test_a_saved_file_renders_its_caustics_without_the_add_on(
     pool, render, tmp_path, addon_disabled_afterwards

@@ -10,14 +10,6 @@ import harness
 pytestmark = pytest.mark.render
 
 
-@pytest.fixture
-def addon_disabled_afterwards(addon):
-    yield
-    bpy.context.preferences.filepaths.use_scripts_auto_execute = True
-    addon_utils.enable(harness.ADDON_MODULE, default_set=True)
-    assert hasattr(bpy.types, "OBJECT_OT_water_surface_add")
-
-
 def test_saved_water_renders_the_same_without_the_add_on_and_with_auto_run_off(
     scene, render, tmp_path, addon_disabled_afterwards
 ):

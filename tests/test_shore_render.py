@@ -223,14 +223,6 @@ def _shore(scene, mirror_setup=True):
     return added.object, camera
 
 
-@pytest.fixture
-def addon_disabled_afterwards(addon):
-    yield
-    bpy.context.preferences.filepaths.use_scripts_auto_execute = True
-    addon_utils.enable(harness.ADDON_MODULE, default_set=True)
-    assert hasattr(bpy.types, "OBJECT_OT_water_surface_add")
-
-
 def test_the_shore_foam_renders_the_same_without_the_add_on_in_eevee(
     scene, render, tmp_path, addon_disabled_afterwards
 ):
