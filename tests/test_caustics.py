@@ -87,6 +87,7 @@ def pool(addon, eevee):
         "water": added.object,
         "node": added.material.node_tree.nodes["Water Surface"],
         "sun": sun,
+        "camera": camera,
         "patch": patch,
         "beside": beside,
         "above": above,
@@ -168,6 +169,39 @@ def test_the_pattern_moves_with_the_wind_and_stands_still_without(pool, render):
     murky = _render(pool, render, "murky", view=8, Absorption=(1.5, 1.5, 1.5, 1.0))[patch]
     print(f"view 8 std: clear {frames[1].std():.3f}, absorption 1.5 {murky.std():.3f}")
     assert murky.std() < 0.5 * frames[1].std()
+
+
+@pytest.mark.render
+@pytest.mark.newest_only
+def test_the_contrast_falls_with_depth(pool, render):
+    """Point 1: the same bed 1 m and 5 m down (moved; the surroundings read the new depth). The
+    pattern's spread at 5 m is exp(-4 / FADE_DEPTH) = 0.61 of that at 1 m; without the fade it
+    would be the same. The caustic lines are sharp, so a pixel's samples average them over its
+    footprint on the bed: for the deeper bed the lens is lengthened by the ratio of the apparent
+    distances (3 m of air plus depth / 1.33) so that each pixel covers the same patch of bed."""
+    scene, bed, camera = pool["scene"], bpy.data.objects["Bed"], pool["camera"]
+    scene.frame_set(1)
+    spread = {}
+    lens = camera.data.lens
+    try:
+        for depth in (1.0, 5.0):
+            bed.location.z = BED_DEPTH - depth
+            camera.data.lens = lens * (3.0 + depth / 1.33) / (3.0 + BED_DEPTH / 1.33)
+            origin, directions = harness.pixel_rays(scene, camera)
+            at_surface, ok = harness.hit_plane_z(origin, directions, 0.0)
+            at_bed, _ok = harness.hit_plane_z(origin, directions, -depth)
+            patch = ok & (at_surface[..., 0] < SLAB_X[0] - 0.5) & (at_bed[..., 0] < SLAB_X[0] - 0.3)
+            assert patch.sum() > 1500
+            pattern = _render(pool, render, f"depth_{depth:g}", view=8)[patch]
+            spread[depth] = float(pattern.std())
+    finally:
+        bed.location.z = 0.0
+        camera.data.lens = lens
+    ratio = spread[5.0] / spread[1.0]
+    expected = math.exp(-4.0 / harness.addon("nodes.caustics").FADE_DEPTH)
+    print(f"view 8 std: bed 1 m down {spread[1.0]:.3f}, 5 m down {spread[5.0]:.3f}, ratio {ratio:.2f}")
+    assert spread[1.0] > 0.2
+    assert abs(ratio - expected) < 0.15
 
 
 @pytest.mark.render
