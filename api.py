@@ -10,6 +10,7 @@ whatever extension repository it was installed into::
     added = water_api.add_water(preset="windy_river", size=40)
 
 Bad input raises PresetError, AddWaterError, MirrorSetupError, SurroundingsError, PhysicalCausticsError,
+FloatError,
 NotEditableError (linked or overridden data, never edited) or FileJobError, each with a one-line
 message; nothing is left half made.
 """
@@ -21,6 +22,7 @@ import bpy
 from . import presets as _presets
 from .presets import PresetError
 from .water import files as _files
+from .water import floating as _floating
 from .water import mirror as _mirror
 from .water import physical_caustics as _physical_caustics
 from .water import surroundings as _surroundings
@@ -28,6 +30,7 @@ from .water import values as _values
 from .water import waves as _waves
 from .water.editable import NotEditableError, check_editable
 from .water.files import FileJobError
+from .water.floating import FloatError
 from .water.mirror import MirrorSetupError
 from .water.physical_caustics import PhysicalCausticsError
 from .water.plane import AddedWater, AddWaterError
@@ -39,6 +42,7 @@ __all__ = (
     "AddWaterError",
     "AddedWater",
     "FileJobError",
+    "FloatError",
     "MirrorSetupError",
     "NotEditableError",
     "PhysicalCausticsError",
@@ -47,6 +51,7 @@ __all__ = (
     "add_water_to_file",
     "add_waves",
     "apply_preset",
+    "float_on_water",
     "is_water",
     "preset_ids",
     "read_values",
@@ -55,6 +60,7 @@ __all__ = (
     "set_physical_caustics",
     "set_surroundings",
     "setup_mirror",
+    "stop_floating",
     "SurroundingsError",
     "write_values",
 )
@@ -136,6 +142,25 @@ def set_physical_caustics(
     if enable:
         return _physical_caustics.enable(water, scene)
     return _physical_caustics.disable(water, scene)
+
+
+def float_on_water(
+    obj: bpy.types.Object,
+    water: bpy.types.Object | None = None,
+    tilt_damping: float = 0.0,
+    scene: bpy.types.Scene | None = None,
+) -> list[str]:
+    """Makes `obj` ride `water` (default: the water below or above its origin) with constraints:
+    its origin on the evaluated surface, its up axis along the normal, less by `tilt_damping`
+    (0..1). FloatError when there is no water; returns the changes in words."""
+    if water is None:
+        water = _floating.water_below(obj, scene or bpy.context.scene)
+    return _floating.float_on_water(obj, water, tilt_damping)
+
+
+def stop_floating(obj: bpy.types.Object) -> list[str]:
+    """Removes what `float_on_water` added; returns the changes in words."""
+    return _floating.stop_floating(obj)
 
 
 def read_values(water: bpy.types.Object) -> dict:

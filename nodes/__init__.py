@@ -1,6 +1,6 @@
 """Node groups and the water material, each group described as data and built by one builder."""
 
-from . import bump_uv, caustics, ocean, surroundings, water_surface, water_waves, wind_frame
+from . import bump_uv, caustics, ocean, sea_fade, surroundings, water_surface, water_waves, wind_frame
 from .builder import NodeGroupError, ensure_group
 
 SPECS = {
@@ -11,6 +11,7 @@ SPECS = {
         caustics.SPEC,
         water_surface.SPEC,
         water_waves.SPEC,
+        sea_fade.SPEC,
         ocean.NORMAL_SPEC,
         ocean.SHADE_SPEC,
         surroundings.SPEC,

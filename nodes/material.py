@@ -111,9 +111,14 @@ def drive_socket(socket, index, expression, variables):
 
     `variables` are (name, id_type, id, path) of single-property variables.
     """
-    args = ("default_value",) if index is None else ("default_value", index)
-    socket.driver_remove(*args)
-    driver = socket.driver_add(*args).driver
+    return drive_property(socket, "default_value", index, expression, variables)
+
+
+def drive_property(owner, prop, index, expression, variables):
+    """A simple-expression driver on `owner.prop[index]` (`index` None: the whole property)."""
+    args = (prop,) if index is None else (prop, index)
+    owner.driver_remove(*args)
+    driver = owner.driver_add(*args).driver
     driver.type = "SCRIPTED"
     for var_name, id_type, target_id, path in variables:
         var = driver.variables.new()
@@ -125,10 +130,12 @@ def drive_socket(socket, index, expression, variables):
     return driver
 
 
-def drive_clock(socket, scene):
-    """`socket` = seconds on `scene`'s clock: frame / (fps / fps_base)."""
-    drive_socket(
+def drive_clock(socket, scene, prop="default_value"):
+    """`socket.prop` (a socket's value, or any float property) = seconds on `scene`'s clock:
+    frame / (fps / fps_base)."""
+    drive_property(
         socket,
+        prop,
         None,
         TIME_EXPRESSION,
         [("fps", "SCENE", scene, "render.fps"), ("fps_base", "SCENE", scene, "render.fps_base")],

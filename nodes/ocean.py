@@ -6,7 +6,9 @@ of the bump map and gives the direction the eye reflects into. The material
 looks the sky up in that direction (the world's environment image, or its
 colour) and hands it to `Water Ocean Shade`:
 `F = dot(-eye, n) / 2 + 0.5`, `deep * F + sky * (1 - F) + pow(mean(sky), Glint Power)`,
-unlit, as the seeds draw it. Two groups, because a shader group cannot hold the
+unlit, as the seeds draw it. Where the mesh carries foam (the open sea's
+Ocean modifier, `sea_fade.py`) the crests turn to white foam lit by the scene.
+Two groups, because a shader group cannot hold the
 world's image: the lookup sits between them in the material.
 """
 
@@ -17,6 +19,9 @@ from .water_waves import NORMAL_ATTRIBUTE
 NORMAL_NAME = "Water Ocean Normal"
 SHADE_NAME = "Water Ocean Shade"
 DEEP_BLUE = (0.0, 0.2, 0.4, 1.0)
+WHITECAPS_MAX = 4.0
+FOAM_EDGES = (0.05, 0.3)  # the Ocean modifier's foam (as rendered): none below 0.05, white from 0.3
+FOAM_WHITE = (0.85, 0.87, 0.88)
 
 
 def _tap(key, column):
@@ -174,8 +179,9 @@ NORMAL_SPEC = GroupSpec(
 
 SHADE_SPEC = GroupSpec(
     name=SHADE_NAME,
-    version=1,
-    description="Ocean colour: deep blue and the reflected sky by the ocean Fresnel, plus the glint",
+    version=2,  # 2: whitecaps (white, scene-lit foam where `Foam` is high)
+    description="Ocean colour: deep blue and the reflected sky by the ocean Fresnel, plus the glint; "
+    "white lit foam on the crests",
     inputs=(
         Socket("Normal", "NodeSocketVector", (0.0, 0.0, 1.0), hide_value=True, tooltip="Shading normal n"),
         Socket(
@@ -195,6 +201,24 @@ SHADE_SPEC = GroupSpec(
             max=1000.0,
             tooltip="The glint is mean(sky) to this power: only the brightest sky glints",
         ),
+        Socket(
+            "Foam",
+            "NodeSocketFloat",
+            0.0,
+            min=0.0,
+            max=1.0,
+            hide_value=True,
+            tooltip="The Ocean modifier's foam here (0 where the mesh has none)",
+        ),
+        Socket(
+            "Whitecaps",
+            "NodeSocketFloat",
+            1.0,
+            min=0.0,
+            max=WHITECAPS_MAX,
+            tooltip="How much of the Ocean modifier's foam shows as white, sunlit foam on the crests "
+            "(0 = none)",
+        ),
     ),
     outputs=(Socket("Shader", "NodeSocketShader"),),
     nodes={
@@ -210,6 +234,19 @@ SHADE_SPEC = GroupSpec(
         "water": vmath("ADD", 7),
         "color": vmath("ADD", 8, "colour"),
         "emit": Node("ShaderNodeEmission", 9, values={"Strength": 1.0}, label="unlit"),
+        # Whitecaps: the foam's crests (smoothstep over FOAM_EDGES) times the strength, lit white.
+        "crest": Node(
+            "ShaderNodeMapRange",
+            8,
+            {"data_type": "FLOAT", "interpolation_type": "SMOOTHSTEP", "clamp": True},
+            {"From Min": FOAM_EDGES[0], "From Max": FOAM_EDGES[1]},
+            label="foam on the crests",
+        ),
+        "cover": math("MULTIPLY", 9, "whitecap cover", clamp=True),
+        "foam_bsdf": Node(
+            "ShaderNodeBsdfDiffuse", 9, values={"Color": (*FOAM_WHITE, 1.0)}, label="white foam, lit"
+        ),
+        "mix": Node("ShaderNodeMixShader", 10, label="water or foam"),
     },
     links=(
         ("geometry:Incoming", "cos:#0"),
@@ -231,6 +268,12 @@ SHADE_SPEC = GroupSpec(
         ("water:Vector", "color:#0"),
         ("glint_v:Vector", "color:#1"),
         ("color:Vector", "emit:Color"),
-        ("emit:Emission", "output:Shader"),
+        ("input:Foam", "crest:Value"),
+        ("crest:Result", "cover:#0"),
+        ("input:Whitecaps", "cover:#1"),
+        ("cover:Value", "mix:Fac"),
+        ("emit:Emission", "mix:#1"),
+        ("foam_bsdf:BSDF", "mix:#2"),
+        ("mix:Shader", "output:Shader"),
     ),
 )

@@ -1,5 +1,6 @@
 """The ocean material: wave normal and bump, the sky looked up in the reflected
-direction, and the ocean colour (groups in `ocean.py`).
+direction, and the ocean colour (groups in `ocean.py`), with the open sea's
+whitecaps where the mesh carries them.
 
 The sky is the world's environment image when it has one (an Environment
 Texture node in the material, as the seeds sample their sky cube), otherwise
@@ -9,7 +10,7 @@ changed world shows without running anything.
 
 import bpy
 
-from . import SPECS, ocean
+from . import SPECS, ocean, sea_fade
 from .builder import ensure_group
 from .bump_image import ensure_bump_image
 from .material import drive_clock, drive_socket, new_node_material
@@ -17,6 +18,7 @@ from .material import drive_clock, drive_socket, new_node_material
 OCEAN_NODE = "Water Ocean"
 NORMAL_NODE = "Water Ocean Normal"
 SKY_NODE = "Sky"
+FOAM_NODE = "Whitecaps"
 DEFAULT_SKY = (0.5, 0.7, 1.0)
 
 
@@ -73,6 +75,11 @@ def make_ocean_material(name="Ocean", scene=None):
         tree.links.new(normal.outputs["Reflection"], lookup)
     tree.links.new(sky.outputs[0], shade.inputs["Sky"])
     tree.links.new(shade.outputs["Shader"], output.inputs["Surface"])
+    # The open sea's whitecaps (`sea_fade.py` stores them); 0 on any other mesh.
+    foam = tree.nodes.new("ShaderNodeAttribute")
+    foam.attribute_type, foam.attribute_name = "GEOMETRY", sea_fade.WHITECAPS_ATTRIBUTE
+    foam.name, foam.label, foam.location = FOAM_NODE, "whitecaps (open sea)", (-300, -350)
+    tree.links.new(foam.outputs["Fac"], shade.inputs["Foam"])
     drive_clock(normal.inputs["Time"], scene)
     return material
 

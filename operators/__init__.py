@@ -4,6 +4,7 @@ import bpy
 
 from .add_water import OBJECT_OT_water_surface_add
 from .caustics_ops import OBJECT_OT_water_physical_caustics
+from .float_ops import OBJECT_OT_water_float, OBJECT_OT_water_float_stop
 from .link_ops import OBJECT_OT_water_surface_bump_set, OBJECT_OT_water_surface_sun_set
 from .mirror_setup import OBJECT_OT_water_mirror_setup
 from .preset_ops import (
@@ -27,6 +28,8 @@ classes = (
     OBJECT_OT_water_surface_repair,
     OBJECT_OT_water_surroundings_set,
     OBJECT_OT_water_physical_caustics,
+    OBJECT_OT_water_float,
+    OBJECT_OT_water_float_stop,
 )
 
 _register_classes, _unregister_classes = bpy.utils.register_classes_factory(classes)

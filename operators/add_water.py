@@ -62,6 +62,13 @@ class OBJECT_OT_water_surface_add(object_utils.AddObjectHelper, bpy.types.Operat
     foam_amount: field_property("foam_amount")
     caustics: field_property("caustics")
     caustics_scale: field_property("caustics_scale")
+    sea: field_property("sea")
+    sea_wind_speed: field_property("sea_wind_speed")
+    sea_spectrum: field_property("sea_spectrum")
+    sea_choppiness: field_property("sea_choppiness")
+    sea_depth: field_property("sea_depth")
+    sea_seed: field_property("sea_seed")
+    whitecaps: field_property("whitecaps")
     mirror_setup: bpy.props.BoolProperty(
         name="Mirror Set-Up",
         description="Turn on EEVEE ray tracing and add a planar probe so the water shows a true mirror",

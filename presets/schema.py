@@ -8,7 +8,7 @@ shader's inputs cannot drift apart.
 import math
 from dataclasses import dataclass
 
-from ..nodes import water_surface
+from ..nodes import ocean, water_surface
 
 
 class PresetError(ValueError):
@@ -75,6 +75,74 @@ SHADING = Field(
     choices=("lake", "ocean"),
 )
 
+# The open sea (`water/open_sea.py`): Blender's Ocean modifier, set from these.
+SEA = Field(
+    "sea",
+    None,
+    "bool",
+    False,
+    0,
+    1,
+    "Open Sea",
+    "Blender's Ocean modifier (spectrum waves, whitecaps) on a sea that reaches the horizon; ocean shading",
+)
+SEA_WIND_SPEED = Field(
+    "sea_wind_speed",
+    None,
+    "float",
+    12.0,
+    1.0,
+    40.0,
+    "Sea Wind Speed",
+    "Wind over the open sea in m/s: 3 is a calm sea, 15 a rough one with whitecaps (a gale is 20)",
+)
+SEA_SPECTRUM = Field(
+    "sea_spectrum",
+    None,
+    "choice",
+    "pierson_moskowitz",
+    0,
+    0,
+    "Sea Spectrum",
+    "The Ocean modifier's wave spectrum: Phillips, Pierson-Moskowitz (a fully grown sea), JONSWAP "
+    "(a growing sea), TMA (JONSWAP in shallow water)",
+    choices=("phillips", "pierson_moskowitz", "jonswap", "tma"),
+)
+SEA_CHOPPINESS = Field(
+    "sea_choppiness",
+    None,
+    "float",
+    1.0,
+    0.0,
+    2.0,
+    "Sea Choppiness",
+    "Sharper crests and flatter troughs (0: round waves; above 1 crests may fold)",
+)
+SEA_DEPTH = Field(
+    "sea_depth",
+    None,
+    "float",
+    200.0,
+    1.0,
+    10000.0,
+    "Sea Depth",
+    "Depth of the sea floor in metres: shallow water slows and shortens the waves",
+)
+SEA_SEED = Field("sea_seed", None, "int", 0, 0, 100000, "Sea Seed", "Another seed, another sea")
+_WHITECAPS_SOCKET = next(s for s in ocean.SHADE_SPEC.inputs if s.name == "Whitecaps")
+# On the ocean shading's group, not `Water Surface`: set by `open_sea.py`, not `write_values`.
+WHITECAPS = Field(
+    "whitecaps",
+    None,
+    "float",
+    _WHITECAPS_SOCKET.default,
+    _WHITECAPS_SOCKET.min,
+    _WHITECAPS_SOCKET.max,
+    "Whitecaps",
+    _WHITECAPS_SOCKET.tooltip,
+)
+SEA_FIELDS = (SEA, SEA_WIND_SPEED, SEA_SPECTRUM, SEA_CHOPPINESS, SEA_DEPTH, SEA_SEED, WHITECAPS)
+
 FIELDS = (
     SHADING,
     SIZE,
@@ -97,6 +165,7 @@ FIELDS = (
     _from_socket("foam_amount", "Foam Amount", "float"),
     _from_socket("caustics", "Caustics", "float"),
     _from_socket("caustics_scale", "Caustics Scale", "float"),
+    *SEA_FIELDS,
 )
 BY_KEY = {field.key: field for field in FIELDS}
 # The shader's values: everything but the plane's size.

@@ -139,6 +139,7 @@ def _sky_share(pixels):
     return pixels[..., 2] / SKY[2]
 
 
+@pytest.mark.newest_only
 def test_sky_share_is_higher_at_a_grazing_view_than_a_steep_one(pond, shown, render):
     scene = pond["scene"]
     shown("floor")
@@ -199,6 +200,7 @@ def test_glint_follows_the_sun(pond, render):
     assert math.dist(*peaks) > 15
 
 
+@pytest.mark.newest_only
 def test_wave_height_widens_the_wobble_of_a_mirrored_block(pond, shown, render, project):
     """Wave Height tilts the reflection: the red block's mirror image frays more the higher it is."""
     scene = pond["scene"]

@@ -122,6 +122,7 @@ def test_frames_split_across_workers_equal_one_animation_job(shot, tmp_path):
     assert moved > 0.005, f"the water moves between the frames ({moved:.4f})"
 
 
+@pytest.mark.newest_only
 def test_cli_renders_a_range_with_padding_and_a_line_a_frame(shot, tmp_path, capfd):
     cli = harness.addon("cli")
     status = cli.main(["render", str(shot["path"]), str(tmp_path / "cli_###.png"), "--frames", "3-5"])

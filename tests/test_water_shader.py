@@ -160,6 +160,7 @@ def test_final_view_is_the_composition_of_the_debug_views(water, render):
     assert np.abs(views[1] - views[2])[mask].mean() > 0.1
 
 
+@pytest.mark.newest_only
 def test_two_frames_differ_only_with_wind(water, render):
     node, scene = water["node"], water["scene"]
     mask, _origin, _hits = _flat_water_mask(water, render)

@@ -10,7 +10,7 @@ from ..nodes.material import bump_image, glint_sun, water_node
 from ..nodes.ocean_material import ocean_nodes
 from ..nodes.water_surface import DEBUG_VIEWS
 from ..nodes.water_waves import WAVE_COUNT
-from ..water import physical_caustics
+from ..water import floating, open_sea, physical_caustics
 from ..water.editable import why_not_editable
 from ..water.mirror import find_probe
 from ..water.repair import needs_repair
@@ -24,6 +24,16 @@ _OCEAN_INPUTS = (
     ("normal", "Tex Stretch"),
     ("shade", "Deep Color"),
     ("shade", "Glint Power"),
+)
+
+# The open sea's Ocean modifier settings the panel shows: (property, label).
+_SEA_PROPS = (
+    ("wind_velocity", "Wind Speed (m/s)"),
+    ("wave_direction", "Wind Direction"),
+    ("spectrum", "Spectrum"),
+    ("choppiness", "Choppiness"),
+    ("depth", "Depth"),
+    ("random_seed", "Seed"),
 )
 
 _SECTIONS = (
@@ -66,6 +76,7 @@ class VIEW3D_PT_water_surface(bpy.types.Panel):
         if material is None:
             layout.label(text="The active object is not water", icon="INFO")
             layout.operator("object.water_surface_add", icon="ADD")
+            self.draw_floating(layout, context)
             return
         node = water_node(material)
         layout.label(text=f"Material: {material.name}", icon="MATERIAL")
@@ -81,7 +92,10 @@ class VIEW3D_PT_water_surface(bpy.types.Panel):
             return
         if node is None:
             self.draw_ocean(layout, material)
-            self.draw_waves(layout, context.active_object)
+            if open_sea.is_open_sea(context.active_object):
+                self.draw_sea(layout, context.active_object, material)
+            else:
+                self.draw_waves(layout, context.active_object)
             return
 
         row = layout.row(align=True)
@@ -160,6 +174,29 @@ class VIEW3D_PT_water_surface(bpy.types.Panel):
         nodes = {"normal": normal, "shade": shade}
         for which, name in _OCEAN_INPUTS:
             box.prop(nodes[which].inputs[name], "default_value", text=name)
+
+    def draw_sea(self, layout, obj, material):
+        """The open sea's Ocean modifier settings and its whitecaps."""
+        ocean, _fade = open_sea.sea_modifiers(obj)
+        box = layout.box()
+        box.label(text="Open Sea (Ocean modifier)", icon="MOD_OCEAN")
+        box.use_property_split = True
+        for prop, text in _SEA_PROPS:
+            box.prop(ocean, prop, text=text)
+        whitecaps = open_sea.whitecaps_input(material)
+        if whitecaps is not None:
+            box.prop(whitecaps, "default_value", text="Whitecaps")
+
+    def draw_floating(self, layout, context):
+        """Float the selected objects on the water below them, or stop."""
+        box = layout.box()
+        box.label(text="Floating", icon="MOD_OCEAN")
+        row = box.row(align=True)
+        row.operator("object.water_float", icon="CON_SHRINKWRAP")
+        row.operator("object.water_float_stop", text="Stop", icon="X")
+        water = floating.floating_on(context.active_object) if context.active_object else None
+        if water is not None:
+            box.label(text=f"Floats on '{water.name}'")
 
     def draw_waves(self, layout, obj):
         """The wave modifier's inputs, wave by wave, or a button to add it."""

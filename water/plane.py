@@ -10,8 +10,9 @@ from .. import presets
 from ..nodes.material import make_water_material
 from ..nodes.ocean_material import make_ocean_material
 from ..presets import schema
-from . import mirror, surroundings, waves
+from . import mirror, open_sea, surroundings, waves
 from .editable import check_editable
+from .sea_mesh import new_sea_mesh
 from .values import write_values
 
 BYTES_PER_VERTEX = 400  # mesh, wave attribute and evaluated copy, measured with margin
@@ -55,7 +56,7 @@ def new_water_mesh(name, size, resolution=2):
 def dress_water(obj, scene, values):
     """Gives `obj` a new material (lake or ocean shading) set to `values`, and the waves if asked."""
     check_editable(obj, obj.data)
-    if values.get("shading", "lake") == "ocean":
+    if values.get("shading", "lake") == "ocean" or values.get("sea"):
         material = make_ocean_material(name=obj.name, scene=scene)
     else:
         material = make_water_material(name=obj.name, scene=scene)
@@ -66,7 +67,10 @@ def dress_water(obj, scene, values):
     # without the water); a refraction closure would otherwise shadow the bed in both engines.
     # Cycles' physical caustics turn it back on (`physical_caustics.py`): they need the shadow.
     obj.visible_shadow = False
-    if values.get("waves"):
+    if values.get("sea"):
+        open_sea.set_sea(obj, values, scene)
+        open_sea.whitecaps_input(material).default_value = values["whitecaps"]
+    elif values.get("waves"):
         waves.add_waves(obj)
     return material
 
@@ -139,17 +143,20 @@ def add_water(
     scene = scene or bpy.context.scene
     values = resolve_values(preset, **overrides)
     notes = []
+    note = open_sea.sea_memory_note() if values["sea"] else None
+    notes += [note] if note else []
     if values["resolution"] > max_resolution():
         values["resolution"] = max_resolution()
         notes.append(f"resolution lowered to {values['resolution']}: the free memory holds no more")
     before = _snapshot(scene)
     try:
         check_editable(scene, collection or scene.collection)
-        obj = bpy.data.objects.new(name, new_water_mesh(name, values["size"], values["resolution"]))
+        obj = bpy.data.objects.new(name, _new_mesh(name, values))
         (collection or scene.collection).objects.link(obj)
         if matrix is None:
             matrix = Matrix.LocRotScale(Vector(location), Euler(rotation), None)
         obj.matrix_world = matrix
+        see_surroundings = see_surroundings and not values["sea"]
         if see_surroundings and surroundings.default_surroundings(obj, scene):
             notes += _densify_for_surroundings(obj, values)
         material = dress_water(obj, scene, values)
@@ -160,6 +167,15 @@ def add_water(
         message = str(error).strip().splitlines()[-1] if str(error).strip() else type(error).__name__
         raise AddWaterError(f"adding water failed, nothing was added: {message}") from error
     return AddedWater(obj, material, values, changes, notes)
+
+
+def _new_mesh(name, values):
+    """The lake's even grid, or the open sea's grid that reaches the horizon."""
+    if values["sea"]:
+        values["shading"] = "ocean"
+        spacing = open_sea.cell_size(values["sea_wind_speed"])
+        return new_sea_mesh(name, values["size"], values["resolution"], spacing)
+    return new_water_mesh(name, values["size"], values["resolution"])
 
 
 def _densify_for_surroundings(obj, values):

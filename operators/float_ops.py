@@ -1,0 +1,88 @@
+"""`object.water_float` and `object.water_float_stop`: selected objects ride the water below them."""
+
+import bpy
+
+from ..water import floating
+from ..water.editable import NotEditableError, why_not_editable
+from ..water.values import is_water
+from . import _poll
+
+
+def _floaters(context):
+    """The selected objects that are not water."""
+    return [obj for obj in context.selected_objects if not is_water(obj)]
+
+
+class OBJECT_OT_water_float(bpy.types.Operator):
+    """Make the selected objects float on the water below them (or on the selected water): their
+    origin rides the surface and their up axis follows its tilt, with constraints (no scripts)"""
+
+    bl_idname = "object.water_float"
+    bl_label = "Float on Water"
+    bl_options = {"REGISTER", "UNDO"}
+
+    tilt_damping: bpy.props.FloatProperty(
+        name="Tilt Damping",
+        description="How much less than the water the objects tilt (0: they follow the surface, "
+        "1: they stay upright)",
+        default=0.0,
+        min=0.0,
+        max=1.0,
+        subtype="FACTOR",
+    )
+
+    @classmethod
+    def poll(cls, context):
+        floaters = _floaters(context)
+        if not floaters:
+            return _poll.refuse(cls, "Select the objects to float (and, if you like, the water)")
+        for obj in floaters:
+            why = why_not_editable(obj)
+            if why is not None:
+                return _poll.refuse(cls, why)
+        return True
+
+    def execute(self, context):
+        chosen = [obj for obj in context.selected_objects if is_water(obj)]
+        if len(chosen) > 1:
+            self.report({"ERROR"}, "Select one water at most: the objects float on it")
+            return {"CANCELLED"}
+        depsgraph = context.evaluated_depsgraph_get()
+        done, skipped = [], []
+        for obj in _floaters(context):
+            water = chosen[0] if chosen else floating.water_below(obj, context.scene, depsgraph)
+            try:
+                done += floating.float_on_water(obj, water, self.tilt_damping)
+            except (floating.FloatError, NotEditableError) as error:
+                skipped.append(str(error))
+        for message in skipped:
+            self.report({"WARNING"}, message)
+        if not done:
+            self.report({"ERROR"}, "Nothing floats: " + "; ".join(skipped))
+            return {"CANCELLED"}
+        self.report({"INFO"}, "; ".join(done))
+        return {"FINISHED"}
+
+
+class OBJECT_OT_water_float_stop(bpy.types.Operator):
+    """Stop the selected objects floating: their floating constraints are removed"""
+
+    bl_idname = "object.water_float_stop"
+    bl_label = "Stop Floating"
+    bl_options = {"REGISTER", "UNDO"}
+
+    @classmethod
+    def poll(cls, context):
+        if not any(floating.is_floating(obj) for obj in context.selected_objects):
+            return _poll.refuse(cls, "No selected object floats on water")
+        return True
+
+    def execute(self, context):
+        changes = []
+        for obj in context.selected_objects:
+            try:
+                changes += floating.stop_floating(obj)
+            except NotEditableError as error:
+                self.report({"WARNING"}, str(error))
+        self.report({"INFO"}, "; ".join(changes) or "no change")
+        return {"FINISHED"}

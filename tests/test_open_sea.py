@@ -1,0 +1,314 @@
+"""The open sea: Blender's Ocean modifier under the ocean shading, whitecaps, the horizon, floating.
+
+The seas here have a wind that is not along an axis, (0.8, 0.6) or (-0.6, 0.8), so the wind's
+rotation into the modifier's angle is exercised.
+"""
+
+import math
+
+import bpy
+import numpy as np
+import pytest
+from mathutils import Vector
+
+import harness
+
+WIND = (0.8, 0.6)
+
+
+def _api():
+    return harness.addon("api")
+
+
+def _open_sea(scene, **values):
+    values.setdefault("wind_direction", WIND)
+    return _api().add_water(scene, preset="open_sea", **values)
+
+
+def _evaluated_points(obj):
+    """(rest xy, evaluated positions) of every point, object space."""
+    depsgraph = bpy.context.evaluated_depsgraph_get()
+    mesh = obj.evaluated_get(depsgraph).data
+    count = len(mesh.vertices)
+    rest = np.zeros(count * 3)
+    mesh.attributes["water_rest"].data.foreach_get("vector", rest)
+    position = np.zeros(count * 3)
+    mesh.vertices.foreach_get("co", position)
+    return rest.reshape(-1, 3), position.reshape(-1, 3)
+
+
+def test_open_sea_is_blenders_ocean_modifier_driven_by_the_clock(scene):
+    added = _open_sea(scene, resolution=129)
+    ocean = next(m for m in added.object.modifiers if m.type == "OCEAN")
+    assert ocean.geometry_mode == "DISPLACE" and ocean.spectrum == "PIERSON_MOSKOWITZ"
+    assert ocean.wind_velocity == pytest.approx(12.0) and ocean.use_foam
+    assert ocean.foam_layer_name == "water_ocean_foam"
+    assert ocean.wave_direction == pytest.approx(math.atan2(-WIND[1], WIND[0]))
+    driver = next(d for d in added.object.animation_data.drivers if d.data_path.endswith(".time"))
+    assert driver.driver.is_simple_expression, "no Python at render"
+    material = added.material
+    assert "Water Ocean" in material.node_tree.nodes, "the ocean shading"
+    heights = {}
+    for frame in (1, 12):
+        scene.frame_set(frame)
+        rest, position = _evaluated_points(added.object)
+        inner = np.hypot(rest[:, 0], rest[:, 1]) < 0.25 * ocean.spatial_size  # before the fade
+        heights[frame] = position[inner, 2]
+    moved = np.abs(heights[1] - heights[12]).mean()
+    print(f"height std {heights[1].std():.3f} m, moved between frames {moved:.3f} m")
+    assert heights[1].std() > 0.1 and moved > 0.05
+    # The seeds' ocean preset stays the four sines.
+    seeds = _api().add_water(scene, preset="ocean", resolution=16)
+    assert not any(m.type == "OCEAN" for m in seeds.object.modifiers)
+
+
+@pytest.mark.parametrize("wind", [(0.8, 0.6), (-0.6, 0.8)])
+def test_the_waves_line_up_across_the_wind(scene, wind):
+    """Slopes along the wind are steeper than across it (crests run across the wind), whichever
+    way the wind blows."""
+    added = _open_sea(scene, resolution=129, wind_direction=wind, sea_choppiness=0.0)
+    rest, position = _evaluated_points(added.object)
+    inner = np.abs(rest[:, :2]).max(axis=1) < 40.0
+    n = int(round(math.sqrt(inner.sum())))
+    order = np.lexsort((rest[inner, 0], rest[inner, 1]))
+    height = position[inner, 2][order].reshape(n, n)
+    step = rest[inner, 0][order].reshape(n, n)[0, 1] - rest[inner, 0][order].reshape(n, n)[0, 0]
+    slope_y, slope_x = np.gradient(height, step)
+    along = np.array(wind) / np.hypot(*wind)
+    across = np.array((-along[1], along[0]))
+    steep_along = ((slope_x * along[0] + slope_y * along[1]) ** 2).mean()
+    steep_across = ((slope_x * across[0] + slope_y * across[1]) ** 2).mean()
+    print(f"wind {wind}: slope^2 along {steep_along:.4f}, across {steep_across:.4f}")
+    assert steep_along > 2.0 * steep_across
+
+
+@pytest.fixture(scope="module")
+def sea_scene(addon, eevee):
+    scene = harness.clean_scene(engine=eevee, width=128, height=72, samples=2)
+    harness.set_world_color(scene, (0.45, 0.6, 0.8), 1.0)
+    sun = bpy.data.objects.new("Sun", bpy.data.lights.new("Sun", "SUN"))
+    sun.data.energy = 3.0
+    sun.rotation_euler = (math.radians(40.0), 0.0, math.radians(-35.0))
+    scene.collection.objects.link(sun)
+    seas = {}
+    for wind in (3.0, 15.0):
+        seas[wind] = _open_sea(scene, sea_wind_speed=wind, name=f"Sea {wind:g}").object
+    return {"scene": scene, "seas": seas}
+
+
+def _show(sea_scene, wind):
+    for other, obj in sea_scene["seas"].items():
+        obj.hide_render = other != wind
+
+
+@pytest.mark.render
+@pytest.mark.newest_only
+def test_whitecaps_none_in_a_light_wind_and_clear_in_a_strong_one(sea_scene, render):
+    """The share of the sea the foam covers, seen from 30 m up: a pixel is foam where turning the
+    whitecaps off darkens it by more than 0.05."""
+    scene = sea_scene["scene"]
+    harness.add_camera(scene, (0.0, -40.0, 30.0), (0.0, 0.0, 0.0), lens=35.0)
+    scene.frame_set(24)
+    share = {}
+    for wind, obj in sea_scene["seas"].items():
+        _show(sea_scene, wind)
+        whitecaps = harness.addon("water.open_sea").whitecaps_input(obj.active_material)
+        on = render(scene, f"whitecaps_{wind:g}", exr=True)[..., :3].mean(axis=-1)
+        whitecaps.default_value = 0.0
+        try:
+            off = render(scene, f"no_whitecaps_{wind:g}", exr=True)[..., :3].mean(axis=-1)
+        finally:
+            whitecaps.default_value = 1.0
+        share[wind] = float(((on - off) > 0.05).mean())
+    print(f"foam-covered share: 3 m/s {share[3.0]:.4f}, 15 m/s {share[15.0]:.4f}")
+    assert share[3.0] < 0.002
+    assert share[15.0] > 0.02
+
+
+@pytest.mark.render
+@pytest.mark.newest_only
+def test_the_sea_reaches_the_horizon(sea_scene, render):
+    """From 2 m up, looking at the horizon: every pixel below the horizon's rows (its centre's ray
+    goes down by more than two pixels and a hundredth of a degree: the film's filter blends the
+    horizon's row into its neighbours) is sea, never the world behind it (film transparent:
+    alpha 1)."""
+    scene = sea_scene["scene"]
+    _show(sea_scene, 15.0)
+    camera = harness.add_camera(scene, (5.0, -3.0, 2.0), (65.0, 77.0, 1.0), lens=18.0)
+    scene.render.film_transparent = True
+    scene.frame_set(24)
+    try:
+        image = render(scene, "horizon", exr=True)
+    finally:
+        scene.render.film_transparent = False
+    _origin, directions = harness.pixel_rays(scene, camera)
+    pixel = math.asin(np.abs(directions[1:, :, 2] - directions[:-1, :, 2]).max())
+    down = directions[..., 2] < -math.sin(2.0 * pixel + math.radians(0.01))
+    assert 0.3 * down.size < down.sum() < down.size, "the frame holds sea and sky"
+    print(f"alpha below the horizon: min {image[..., 3][down].min():.4f}")
+    assert image[..., 3][down].min() > 0.99
+
+
+def _repeat_share(water, eye, forward, right, tile):
+    """sum(h(p) h(p + s)) / sum(h(p)^2) over the ground a 90 degree lens at `eye` sees out to two
+    tiles, for the shifts s of one tile along x and y (the modifier's repeat) with both points in
+    the frame: points every 1/16 tile; 1 for a tile repeating unchanged, 0 when no wave repeats."""
+    depsgraph = bpy.context.evaluated_depsgraph_get()
+
+    def seen(point):
+        ahead = (point - eye).dot(forward)
+        return 5.0 <= ahead <= 2.0 * tile and abs((point - eye).dot(right)) <= ahead
+
+    steps = np.arange(-32, 33) * tile / 16.0
+    near, far = [], []
+    for dx in steps:
+        for dy in steps:
+            point = Vector((eye.x + dx, eye.y + dy, 0.0))
+            if not seen(point):
+                continue
+            for shift in ((tile, 0.0), (0.0, tile), (-tile, 0.0), (0.0, -tile)):
+                other = point + Vector((*shift, 0.0))
+                if seen(other):
+                    near.append(_height_below(water, point, depsgraph))
+                    far.append(_height_below(water, other, depsgraph))
+    near, far = np.array(near), np.array(far)
+    return float((near * far).sum() / max((near**2).sum(), 1e-12)), len(near)
+
+
+def _height_below(water, point, depsgraph):
+    evaluated = water.evaluated_get(depsgraph)
+    start = evaluated.matrix_world.inverted() @ Vector((point[0], point[1], point[2] + 100.0))
+    hit, location, _normal, _index = evaluated.ray_cast(start, Vector((0.0, 0.0, -1.0)))
+    return (evaluated.matrix_world @ location).z if hit else 0.0
+
+
+def test_no_two_points_a_tile_apart_both_carry_waves_within_a_frame(scene):
+    """Point 3's repeat, measured on the evaluated sea for the 2 m camera of a 90 degree lens
+    (`_repeat_share`): 1 for a tile repeating unchanged, 0 when no wave repeats. The control is
+    the same Ocean modifier on an even grid five tiles wide (its points 1/64 tile apart, so a
+    tile's shift lands on the same place in a cell), without the fade: the measure finds its
+    repeat."""
+    sea = _open_sea(scene, sea_wind_speed=15.0, resolution=257).object
+    ocean, _fade = harness.addon("water.open_sea").sea_modifiers(sea)
+    tile = ocean.spatial_size
+    eye, forward, right = Vector((5.0, -3.0, 2.0)), Vector((0.6, 0.8, 0.0)), Vector((0.8, -0.6, 0.0))
+    control = bpy.data.objects.new(
+        "Control", harness.addon("water.plane").new_water_mesh("Control", 5 * tile, 321)
+    )
+    scene.collection.objects.link(control)
+    control.location = (eye.x, eye.y, 0.0)
+    copy = control.modifiers.new("Ocean", "OCEAN")
+    for prop in (
+        "geometry_mode",
+        "spectrum",
+        "wind_velocity",
+        "wave_direction",
+        "wave_alignment",
+        "choppiness",
+        "wave_scale",
+        "depth",
+        "random_seed",
+        "spatial_size",
+        "resolution",
+        "time",
+    ):
+        setattr(copy, prop, getattr(ocean, prop))
+    scene.frame_set(24)
+    copy.time = ocean.time
+    share, pairs = _repeat_share(sea, eye, forward, right, tile)
+    repeated, _pairs = _repeat_share(control, eye, forward, right, tile)
+    print(
+        f"tile {tile} m, {pairs} pairs; repeat share: the sea {share:.3f}, the bare modifier {repeated:.3f}"
+    )
+    assert pairs > 500
+    assert repeated > 0.9, "the measure finds the modifier's repeat"
+    assert abs(share) < 0.05
+
+
+def _surface_below(water, point, depsgraph):
+    """(height, unit normal) of the evaluated water straight below `point` (world space)."""
+    evaluated = water.evaluated_get(depsgraph)
+    inverse = evaluated.matrix_world.inverted()
+    start = inverse @ Vector((point[0], point[1], point[2] + 100.0))
+    hit, location, normal, _index = evaluated.ray_cast(start, Vector((0.0, 0.0, -1.0)))
+    assert hit
+    world = evaluated.matrix_world
+    return (world @ location).z, (world.to_3x3() @ normal).normalized()
+
+
+@pytest.mark.parametrize("preset", ["open_sea", "ocean", "lake"])
+def test_a_floating_cube_rides_the_surface_at_three_frames(scene, preset):
+    """Issue 14 point 4: the origin within 1 cm of the evaluated surface below it, the up axis
+    within 2 degrees of the surface's normal averaged over the cube's footprint (7 x 7 rays)."""
+    values = {"resolution": 129} if preset == "open_sea" else {"size": 40.0, "resolution": 160}
+    water = _api().add_water(scene, preset=preset, wind_direction=WIND, **values).object
+    bpy.ops.mesh.primitive_cube_add(size=1.0, location=(3.3, -2.1, 4.0))
+    cube = bpy.context.active_object
+    cube.rotation_euler = (0.0, 0.0, 0.4)
+    changes = _api().float_on_water(cube, scene=scene)
+    assert water.name in changes[0]
+    footprint = np.linspace(-0.5, 0.5, 7)
+    for frame in (1, 13, 31):
+        scene.frame_set(frame)
+        depsgraph = bpy.context.evaluated_depsgraph_get()
+        matrix = cube.evaluated_get(depsgraph).matrix_world
+        origin = matrix.translation
+        height, _normal = _surface_below(water, origin, depsgraph)
+        normals = [
+            _surface_below(water, origin + Vector((dx, dy, 0.0)), depsgraph)[1]
+            for dx in footprint
+            for dy in footprint
+        ]
+        mean_normal = sum(normals, Vector()).normalized()
+        up = (matrix.to_3x3() @ Vector((0.0, 0.0, 1.0))).normalized()
+        angle = math.degrees(up.angle(mean_normal))
+        tilt = math.degrees(mean_normal.angle(Vector((0.0, 0.0, 1.0))))
+        print(
+            f"{preset} frame {frame}: origin {origin.z - height:+.4f} m off, up {angle:.2f} deg off "
+            f"(surface tilt {tilt:.2f} deg)"
+        )
+        assert abs(origin.z - height) < 0.01
+        assert angle < 2.0
+    assert _api().stop_floating(cube)
+    assert not cube.constraints
+
+
+def test_float_refuses_an_object_with_no_water_below(scene):
+    bpy.ops.mesh.primitive_cube_add(size=1.0, location=(500.0, 0.0, 0.0))
+    cube = bpy.context.active_object
+    _api().add_water(scene, size=4.0, mirror_setup=False)
+    with pytest.raises(_api().FloatError, match="no water below"):
+        _api().float_on_water(cube, scene=scene)
+    assert not cube.constraints
+
+
+def test_the_operator_floats_the_selection_on_the_selected_water(scene):
+    water = _api().add_water(scene, preset="ocean", resolution=64, size=20.0).object
+    bpy.ops.mesh.primitive_cube_add(size=1.0, location=(1.0, 1.0, 3.0))
+    cube = bpy.context.active_object
+    water.select_set(True)
+    assert bpy.ops.object.water_float(tilt_damping=0.5) == {"FINISHED"}
+    assert {c.name for c in cube.constraints} == {"Water Float", "Water Float Tilt"}
+    assert cube.constraints["Water Float Tilt"].influence == pytest.approx(0.5)
+    assert not water.constraints, "the water itself does not float"
+    assert bpy.ops.object.water_float_stop() == {"FINISHED"}
+    assert not cube.constraints
+
+
+def test_bad_sea_values_are_clamped_and_said(scene):
+    """Wind 0 or 100 m/s, depth 0, a huge size: clamped into range; an FFT the free memory cannot
+    hold: a coarser one, with a note."""
+    open_sea = harness.addon("water.open_sea")
+    calm = _open_sea(scene, resolution=33, sea_wind_speed=0.0, sea_depth=0.0, size=1.0e12)
+    ocean = next(m for m in calm.object.modifiers if m.type == "OCEAN")
+    assert ocean.wind_velocity == pytest.approx(1.0) and ocean.depth == pytest.approx(1.0)
+    assert calm.values["size"] == 100000.0
+    assert ocean.spatial_size >= open_sea.MIN_TILE
+    gale = _open_sea(scene, resolution=33, sea_wind_speed=100.0, name="Gale")
+    ocean = next(m for m in gale.object.modifiers if m.type == "OCEAN")
+    assert ocean.wind_velocity == pytest.approx(40.0)
+    assert ocean.spatial_size <= open_sea.MAX_TILE
+    assert open_sea.ocean_resolution(available=64 * 2**30) == 16
+    assert open_sea.ocean_resolution(available=64 * 2**20) == 12
+    assert open_sea.ocean_resolution(available=2**20) == 8
+    assert "lowered" in open_sea.sea_memory_note(8)

@@ -1,0 +1,72 @@
+"""Renders the open sea with whitecaps and a floating boat-like object: out/open_sea.png, copied
+to docs/. The sky is the ocean demo's generated image (`render_ocean.sky_world`); the sea is the
+`open_sea` preset at 15 m/s; the boat (a hull and a cabin, joined) floats with
+`api.float_on_water`. Run with `tools/demo sea`.
+"""
+
+import math
+import shutil
+import sys
+import tempfile
+import time
+
+from render_ocean import sky_world
+
+import harness
+
+OUT = harness.ROOT / "out"
+DOCS = harness.ROOT / "docs"
+SIZE = (640, 360)
+
+
+def boat(bpy, scene):
+    """A 6 m hull with a cabin, one object, origin at the waterline."""
+    bpy.ops.mesh.primitive_cube_add(size=1.0, location=(0.0, 0.0, 0.3))
+    hull = bpy.context.active_object
+    hull.scale = (6.0, 2.2, 1.2)
+    bpy.ops.mesh.primitive_cube_add(size=1.0, location=(-0.8, 0.0, 1.3))
+    cabin = bpy.context.active_object
+    cabin.scale = (2.2, 1.6, 1.0)
+    for obj in (hull, cabin):
+        obj.select_set(True)
+    bpy.context.view_layer.objects.active = hull
+    bpy.ops.object.transform_apply(scale=True)
+    bpy.ops.object.join()
+    material = bpy.data.materials.new("Boat")
+    if bpy.app.version < (5, 0, 0):
+        material.use_nodes = True
+    material.node_tree.nodes["Principled BSDF"].inputs["Base Color"].default_value = (0.6, 0.12, 0.08, 1)
+    hull.data.materials.append(material)
+    hull.name = "Boat"
+    hull.location = (6.0, 22.0, 0.0)
+    hull.rotation_euler = (0.0, 0.0, math.radians(35.0))
+    return hull
+
+
+def main():
+    start = time.monotonic()
+    bpy = harness.start()
+    harness.install(harness.build_zip(tempfile.mkdtemp(prefix="water_surface_dist_")))
+    scene = harness.clean_scene(width=SIZE[0], height=SIZE[1], samples=8)
+    sky_world(bpy, scene)
+    sun = bpy.data.objects.new("Sun", bpy.data.lights.new("Sun", "SUN"))
+    sun.data.energy = 3.0
+    sun.rotation_euler = (math.radians(70.0), 0.0, math.radians(180.0))
+    scene.collection.objects.link(sun)
+    api = harness.addon("api")
+    added = api.add_water(scene, preset="open_sea", sea_wind_speed=15.0, wind_direction=(0.8, 0.6))
+    print(added.summary("open_sea"), flush=True)
+    api.float_on_water(boat(bpy, scene), added.object, tilt_damping=0.3)
+    harness.add_camera(scene, (0.0, -8.0, 6.0), (8.0, 40.0, 0.0), lens=28)
+    scene.frame_set(60)
+    print(f"[1/1] open sea, {SIZE[0]} x {SIZE[1]}, Blender {bpy.app.version_string} ...", flush=True)
+    OUT.mkdir(parents=True, exist_ok=True)
+    harness.render(scene, OUT / "open_sea.png")
+    DOCS.mkdir(parents=True, exist_ok=True)
+    shutil.copyfile(OUT / "open_sea.png", DOCS / "open_sea.png")
+    print(f"wrote {OUT / 'open_sea.png'} in {time.monotonic() - start:.0f} s", flush=True)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
