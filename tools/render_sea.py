@@ -38,7 +38,7 @@ def boat(bpy, scene):
     material.node_tree.nodes["Principled BSDF"].inputs["Base Color"].default_value = (0.6, 0.12, 0.08, 1)
     hull.data.materials.append(material)
     hull.name = "Boat"
-    hull.location = (6.0, 22.0, 0.0)
+    hull.location = (3.0, 16.0, 0.0)
     hull.rotation_euler = (0.0, 0.0, math.radians(35.0))
     return hull
 
@@ -57,7 +57,7 @@ def main():
     added = api.add_water(scene, preset="open_sea", sea_wind_speed=15.0, wind_direction=(0.8, 0.6))
     print(added.summary("open_sea"), flush=True)
     api.float_on_water(boat(bpy, scene), added.object, tilt_damping=0.3)
-    harness.add_camera(scene, (0.0, -8.0, 6.0), (8.0, 40.0, 0.0), lens=28)
+    harness.add_camera(scene, (0.0, -4.0, 3.0), (6.0, 40.0, 0.0), lens=28)
     scene.frame_set(60)
     print(f"[1/1] open sea, {SIZE[0]} x {SIZE[1]}, Blender {bpy.app.version_string} ...", flush=True)
     OUT.mkdir(parents=True, exist_ok=True)
