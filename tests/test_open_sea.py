@@ -312,3 +312,57 @@ def test_bad_sea_values_are_clamped_and_said(scene):
     assert open_sea.ocean_resolution(available=64 * 2**20) == 12
     assert open_sea.ocean_resolution(available=2**20) == 8
     assert "lowered" in open_sea.sea_memory_note(8)
+
+
+@pytest.mark.render
+def test_a_saved_sea_animates_and_renders_the_same_without_the_add_on(
+    scene, render, tmp_path, addon_disabled_afterwards
+):
+    """Point 6: the Ocean modifier's clock is a simple-expression driver, the fade a Geometry
+    Nodes modifier and the floating two constraints, so with the add-on disabled and auto-run
+    off the sea still moves, the cube still rides it, and EEVEE and Cycles render the same."""
+    import addon_utils
+
+    scene.render.resolution_x, scene.render.resolution_y = 64, 36
+    sun = bpy.data.objects.new("Sun", bpy.data.lights.new("Sun", "SUN"))
+    sun.rotation_euler = (0.8, 0.0, 0.5)
+    scene.collection.objects.link(sun)
+    sea = _open_sea(scene, resolution=129, sea_wind_speed=15.0, name="Sea").object
+    bpy.ops.mesh.primitive_cube_add(size=1.0, location=(2.0, 8.0, 3.0))
+    _api().float_on_water(bpy.context.active_object, sea)
+    harness.add_camera(scene, (0.0, -6.0, 4.0), (0.0, 20.0, 0.0), lens=30.0)
+
+    def state():
+        found = {}
+        for frame in (1, 12):
+            scene.frame_set(frame)
+            _rest, position = _evaluated_points(bpy.data.objects["Sea"])
+            cube = bpy.data.objects["Cube"].evaluated_get(bpy.context.evaluated_depsgraph_get())
+            found[frame] = (position[:, 2].copy(), cube.matrix_world.translation.z)
+        return found
+
+    with_addon = state()
+    renders = {}
+    engine = scene.render.engine
+    for name in (engine, "CYCLES"):
+        scene.render.engine = name
+        scene.cycles.samples = 4
+        renders[name] = render(scene, f"with_{name}", exr=True)[..., :3]
+    scene.render.engine = engine
+    path = tmp_path / "sea.blend"
+    bpy.ops.wm.save_as_mainfile(filepath=str(path))
+    addon_utils.disable(harness.ADDON_MODULE, default_set=True)
+    bpy.context.preferences.filepaths.use_scripts_auto_execute = False
+    bpy.ops.wm.open_mainfile(filepath=str(path), load_ui=False, use_scripts=False)
+    scene = bpy.context.scene
+    without = state()
+    for frame in (1, 12):
+        assert np.abs(without[frame][0] - with_addon[frame][0]).max() < 1e-4, frame
+        assert without[frame][1] == pytest.approx(with_addon[frame][1], abs=1e-4)
+    assert np.abs(without[1][0] - without[12][0]).mean() > 0.01, "the sea moves"
+    scene.frame_set(12)
+    for name in (engine, "CYCLES"):
+        scene.render.engine = name
+        difference = np.abs(render(scene, f"without_{name}", exr=True)[..., :3] - renders[name]).mean()
+        print(f"{name}: with and without the add-on, mean difference {difference:.5f}")
+        assert difference < 0.01, name

@@ -173,8 +173,9 @@ def _new_mesh(name, values):
     """The lake's even grid, or the open sea's grid that reaches the horizon."""
     if values["sea"]:
         values["shading"] = "ocean"
-        spacing = open_sea.cell_size(values["sea_wind_speed"])
-        return new_sea_mesh(name, values["size"], values["resolution"], spacing)
+        wind = values["sea_wind_speed"]
+        reach = open_sea.FADE_END_TILES * open_sea.tile_size(wind)  # the waves' whole extent
+        return new_sea_mesh(name, values["size"], values["resolution"], open_sea.cell_size(wind), reach)
     return new_water_mesh(name, values["size"], values["resolution"])
 
 

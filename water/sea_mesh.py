@@ -33,11 +33,16 @@ def growth_ratio(steps, first, reach):
     return (low + high) / 2
 
 
-def sea_axis(points, size, spacing):
-    """`points` (odd) coordinates from -size/2 to size/2: even `spacing` in the middle, then growing."""
+def sea_axis(points, size, spacing, even_reach=0.0):
+    """`points` (odd) coordinates from -size/2 to size/2: even `spacing` in the middle, then growing.
+
+    The even middle reaches at least `even_reach` metres (the steps grow past `spacing` when the
+    points are too few), so wherever the waves displace the mesh its points are evenly spaced:
+    displaced, sparse points would fold into long overlapping triangles (and a software
+    rasteriser spends minutes on them)."""
     half = (points - 1) // 2
     inner = max(1, min(half, round(half * INNER_SHARE)))
-    inner_reach = min(inner * spacing, size / 2)
+    inner_reach = min(max(inner * spacing, even_reach), size / 2)
     step = inner_reach / inner
     outer = half - inner
     ratio = growth_ratio(outer, step, size / 2 - inner_reach)
@@ -51,11 +56,11 @@ def sea_axis(points, size, spacing):
     return np.concatenate([-positive[:0:-1], positive])
 
 
-def new_sea_mesh(name, size, points, spacing):
+def new_sea_mesh(name, size, points, spacing, even_reach=0.0):
     """A smooth-shaded grid of `points` x `points` (made odd) over `size` metres, even `spacing`
-    in the middle, with UVs and the `water_rest` attribute."""
+    in the middle (out to at least `even_reach`), with UVs and the `water_rest` attribute."""
     points = max(5, points | 1)
-    axis = sea_axis(points, size, spacing)
+    axis = sea_axis(points, size, spacing, even_reach)
     n = len(axis)
     x, y = np.meshgrid(axis, axis)
     co = np.column_stack([x.ravel(), y.ravel(), np.zeros(n * n)])
