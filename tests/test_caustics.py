@@ -207,15 +207,15 @@ def test_the_contrast_falls_with_depth(pool, render):
 @pytest.mark.render
 @pytest.mark.newest_only
 def test_bad_input_gives_finite_pixels_and_no_error(pool, render):
-    """No sun, a sun hidden from renders, below the horizon or straight down, Caustics Scale 0 or
-    huge, a strength far above 1: never an error, NaN or black water; no sunlight, no caustics."""
+    """No sun, a sun below the horizon or straight down, Caustics Scale 0 or huge, a strength far
+    above 1: never an error, NaN or black water; no sunlight, no caustics. (A sun hidden from
+    renders sets `Sun Lit` to 0 as "no sun" does: `test_a_sun_hidden_from_renders_...`.)"""
     sun, patch, material = pool["sun"], pool["patch"], pool["water"].active_material
     drive_sun = harness.addon("nodes.material").drive_sun
     pool["scene"].frame_set(1)
     cases = {
         "sun straight down": ({}, lambda: setattr(sun, "rotation_euler", (0.0, 0.0, 0.0))),
         "no sun": ({}, lambda: drive_sun(material, None)),
-        "sun not rendered": ({}, lambda: setattr(sun, "hide_render", True)),
         "sun below the horizon": ({}, lambda: setattr(sun, "rotation_euler", (math.radians(120.0), 0, 0))),
         "Caustics Scale 0": ({"Caustics Scale": 0.0}, None),
         "Caustics Scale huge": ({"Caustics Scale": 1.0e9}, None),
@@ -235,13 +235,26 @@ def test_bad_input_gives_finite_pixels_and_no_error(pool, render):
             drive_sun(material, sun)
         assert np.isfinite(pattern).all(), case
         spread[case] = float(pattern[patch].std())
-        if case in ("no sun", "sun not rendered", "sun below the horizon"):
+        if case in ("no sun", "sun below the horizon"):
             assert np.abs(pattern[patch] - 1.0).max() < 0.01, f"{case}: no sunlight, no caustics"
         if final is not None:
             assert np.isfinite(final).all() and final[patch].mean() > 0.05, "never black water"
     print({case: round(value, 3) for case, value in spread.items()})
     assert spread["sun straight down"] > 0.15
     assert spread["Caustics far above 1"] < 5.0, "the strength is kept in range"
+
+
+def test_a_sun_hidden_from_renders_turns_the_caustics_off(pool):
+    """`Sun Lit` follows the sun's render visibility through its driver: 0 hidden, 1 shown."""
+    sun, node, scene = pool["sun"], pool["node"], pool["scene"]
+    try:
+        sun.hide_render = True
+        scene.frame_set(2)
+        assert node.inputs["Sun Lit"].default_value == 0.0
+    finally:
+        sun.hide_render = False
+        scene.frame_set(1)
+    assert node.inputs["Sun Lit"].default_value == 1.0
 
 
 def test_physical_caustics_switch_sets_cycles_up_and_puts_everything_back(pool):
@@ -305,7 +318,7 @@ def test_cycles_shows_the_pattern_both_ways(pool, render):
     assert np.isfinite(mnee).all() and means["mnee"] > 0.5 * means["off"], "MNEE lights the bed"
 
 
-def test_presets_turn_caustics_on_where_the_issue_asks():
+def test_presets_turn_caustics_on_where_the_issue_asks(addon):
     presets = harness.addon("presets")
     assert presets.get("lake").values["caustics"] == 0.0
     assert presets.get("clear_lake").values["caustics"] > 0.0

@@ -106,7 +106,10 @@ def test_the_only_sun_highlight_is_the_glint(lake, render, elevation, azimuth, c
         assert views[1][near].max() > 5  # measured 9300, 9300 and 12 (a sliver of the sun at 70 degrees)
         return
     assert views[1][near].max() <= SKY.max() + 0.2, "no lamp highlight in the reflection"
-    views |= _views(lake, render, f"sun{elevation:.0f}", (0, 2, 3, 5))
+    # The composition is checked for one sun (45 degrees); the others check the highlight and the
+    # glint's colour (two renders fewer each: these renders are the suite's slowest).
+    compose = elevation == 45.0
+    views |= _views(lake, render, f"sun{elevation:.0f}", (0, 2, 3, 5) if compose else (0, 5))
     node.inputs["Specular Strength"].default_value = 0.0
     try:
         dark = render(lake["scene"], f"sun{elevation:.0f}_strength_0", exr=True)[..., :3]
@@ -120,6 +123,8 @@ def test_the_only_sun_highlight_is_the_glint(lake, render, elevation, azimuth, c
     assert peak.max() > 0.3, f"glint peak {peak}"
     assert peak / peak.max() == pytest.approx(np.array(color) / max(color), abs=0.02)
     assert views[0][near].max() > dark[near].max() + 0.2
+    if not compose:
+        return
     # And the final picture is the composition of the debug views, glint included.
     blend = node.inputs["Dull Blend"].default_value
     dull = np.array(node.inputs["Dull Color"].default_value[:3])

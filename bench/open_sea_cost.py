@@ -1,0 +1,149 @@
+"""Benchmark: the `open_sea` preset against Blender's Ocean modifier alone and the seeds' ocean.
+
+Three waters with the same number of vertices (385 x 385), one in the scene at a time:
+
+* `open_sea`: the preset at 12 m/s (Ocean modifier, `Water Sea Fade`, ocean shading with
+  whitecaps) on its 20 km mesh that reaches the horizon;
+* the Ocean modifier alone: the same modifier settings on an even grid one tile wide (how the
+  modifier is used on its own), with a Principled BSDF water (transmission 1, roughness 0.05);
+* the seeds' `ocean`: the four sines (`Water Waves`) and the ocean shading on an even grid one
+  tile wide.
+
+Per-frame evaluation: milliseconds to evaluate the object over 24 frames (the best of 5
+interleaved rounds). Steady render: EEVEE, 256 x 144, 8 samples, the best of 3 interleaved
+rounds after a first render. Ratios are to the Ocean modifier alone. Run with
+`tools/bench open_sea_cost`.
+"""
+
+import math
+import sys
+import tempfile
+import time
+
+import harness
+
+POINTS = 385
+FRAMES = 24
+EVAL_ROUNDS = 5
+RENDER_ROUNDS = 3
+
+
+def principled_water(bpy):
+    material = bpy.data.materials.new("Principled Water")
+    if bpy.app.version < (5, 0, 0):
+        material.use_nodes = True
+    bsdf = material.node_tree.nodes["Principled BSDF"]
+    bsdf.inputs["Base Color"].default_value = (0.0, 0.2, 0.4, 1.0)
+    bsdf.inputs["Transmission Weight"].default_value = 1.0
+    bsdf.inputs["Roughness"].default_value = 0.05
+    bsdf.inputs["IOR"].default_value = 1.33
+    return material
+
+
+def ocean_alone(bpy, scene, sea_ocean, tile):
+    """An even grid one tile wide with a copy of the sea's Ocean modifier and a Principled water."""
+    mesh = harness.addon("water.plane").new_water_mesh("Ocean Alone", float(tile), POINTS)
+    obj = bpy.data.objects.new("Ocean Alone", mesh)
+    scene.collection.objects.link(obj)
+    modifier = obj.modifiers.new("Ocean", "OCEAN")
+    for prop in (
+        "geometry_mode",
+        "spectrum",
+        "wind_velocity",
+        "wave_direction",
+        "wave_alignment",
+        "choppiness",
+        "wave_scale",
+        "depth",
+        "random_seed",
+        "spatial_size",
+        "resolution",
+        "viewport_resolution",
+        "use_normals",
+        "use_foam",
+        "foam_layer_name",
+    ):
+        setattr(modifier, prop, getattr(sea_ocean, prop))
+    harness.addon("nodes.material").drive_clock(modifier, scene, prop="time")
+    obj.data.materials.append(principled_water(bpy))
+    return obj
+
+
+def evaluation_ms(bpy, scene, obj):
+    """Milliseconds a frame to evaluate `obj` (its mesh read back) over FRAMES frames."""
+    start = time.perf_counter()
+    for frame in range(1, FRAMES + 1):
+        scene.frame_set(frame)
+        depsgraph = bpy.context.evaluated_depsgraph_get()
+        len(obj.evaluated_get(depsgraph).data.vertices)
+    return (time.perf_counter() - start) * 1000.0 / FRAMES
+
+
+def main():
+    bpy = harness.start()
+    harness.install(harness.build_zip(tempfile.mkdtemp(prefix="water_surface_dist_")))
+    scene = harness.clean_scene(width=256, height=144, samples=8)
+    harness.set_world_color(scene, (0.45, 0.6, 0.8))
+    sun = bpy.data.objects.new("Sun", bpy.data.lights.new("Sun", "SUN"))
+    sun.rotation_euler = (math.radians(50.0), 0.0, math.radians(30.0))
+    scene.collection.objects.link(sun)
+    api = harness.addon("api")
+    sea = api.add_water(scene, preset="open_sea", name="Open Sea").object
+    sea_ocean, _fade = harness.addon("water.open_sea").sea_modifiers(sea)
+    tile = sea_ocean.spatial_size
+    seeds = api.add_water(
+        scene, preset="ocean", size=float(tile), resolution=POINTS, name="Seeds Ocean"
+    ).object
+    waters = {
+        "Ocean modifier alone + Principled water": ocean_alone(bpy, scene, sea_ocean, tile),
+        "open_sea (Ocean modifier + fade + ocean shading)": sea,
+        "seeds' ocean (Water Waves + ocean shading)": seeds,
+    }
+    counts = {name: len(obj.data.vertices) for name, obj in waters.items()}
+    harness.add_camera(scene, (0.0, -20.0, 8.0), (0.0, 60.0, 0.0), lens=28.0)
+
+    def show(chosen):
+        for obj in waters.values():
+            obj.hide_render = obj.hide_viewport = obj is not chosen
+
+    evaluation = {name: [] for name in waters}
+    for _round in range(EVAL_ROUNDS):
+        for name, obj in waters.items():
+            show(obj)
+            evaluation[name].append(evaluation_ms(bpy, scene, obj))
+    out = tempfile.mkdtemp(prefix="water_surface_bench_")
+    first, steady = {}, {name: [] for name in waters}
+    scene.frame_set(12)
+    for name, obj in waters.items():
+        show(obj)
+        start = time.perf_counter()
+        harness.render(scene, f"{out}/first.png")
+        first[name] = time.perf_counter() - start
+    for _round in range(RENDER_ROUNDS):
+        for name, obj in waters.items():
+            show(obj)
+            harness.render(scene, f"{out}/switch.png")
+            start = time.perf_counter()
+            harness.render(scene, f"{out}/steady.png")
+            steady[name].append(time.perf_counter() - start)
+    base = "Ocean modifier alone + Principled water"
+    base_eval, base_render = min(evaluation[base]), min(steady[base])
+    print(
+        f"\nBlender {bpy.app.version_string}; {FRAMES} frames, best of {EVAL_ROUNDS} rounds; "
+        f"renders 256 x 144, 8 samples, best of {RENDER_ROUNDS}"
+    )
+    print(
+        "| water | vertices | ms/frame | / Ocean alone | first render s | steady render s | / Ocean alone |"
+    )
+    print("| --- | --- | --- | --- | --- | --- | --- |")
+    for name in waters:
+        ms, render_s = min(evaluation[name]), min(steady[name])
+        print(
+            f"| {name} | {counts[name]} | {ms:.1f} | {ms / base_eval:.2f} | {first[name]:.2f} | "
+            f"{render_s:.2f} | {render_s / base_render:.2f} |"
+        )
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
