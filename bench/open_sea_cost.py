@@ -46,24 +46,7 @@ def ocean_alone(bpy, scene, sea_ocean, tile):
     obj = bpy.data.objects.new("Ocean Alone", mesh)
     scene.collection.objects.link(obj)
     modifier = obj.modifiers.new("Ocean", "OCEAN")
-    for prop in (
-        "geometry_mode",
-        "spectrum",
-        "wind_velocity",
-        "wave_direction",
-        "wave_alignment",
-        "choppiness",
-        "wave_scale",
-        "depth",
-        "random_seed",
-        "spatial_size",
-        "resolution",
-        "viewport_resolution",
-        "use_normals",
-        "use_foam",
-        "foam_layer_name",
-    ):
-        setattr(modifier, prop, getattr(sea_ocean, prop))
+    harness.addon("water.open_sea").copy_settings(sea_ocean, modifier)
     harness.addon("nodes.material").drive_clock(modifier, scene, prop="time")
     obj.data.materials.append(principled_water(bpy))
     return obj

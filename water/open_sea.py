@@ -122,13 +122,40 @@ def sea_modifiers(obj):
     return None
 
 
+# The Ocean modifier settings `set_sea` chooses: what a copy of the sea's waves needs.
+SETTINGS = (
+    "geometry_mode",
+    "spectrum",
+    "wind_velocity",
+    "wave_direction",
+    "wave_alignment",
+    "choppiness",
+    "wave_scale",
+    "depth",
+    "random_seed",
+    "spatial_size",
+    "resolution",
+    "viewport_resolution",
+    "use_normals",
+    "use_foam",
+    "foam_layer_name",
+    "foam_coverage",
+)
+
+
+def copy_settings(source, target):
+    """Gives the Ocean modifier `target` the wave settings of `source` (its time aside)."""
+    for prop in SETTINGS:
+        setattr(target, prop, getattr(source, prop))
+
+
 def is_open_sea(obj):
     return sea_modifiers(obj) is not None
 
 
 def set_sea(obj, values, scene):
     """Adds (or updates) the Ocean modifier and the fade on `obj` from preset values (`sea_*`
-    keys, `wind_direction`, clamped beforehand); returns what it set, in words."""
+    keys, `wind_direction`, clamped beforehand)."""
     check_editable(obj, obj.data)
     found = sea_modifiers(obj)
     if found is None:
@@ -157,28 +184,11 @@ def set_sea(obj, values, scene):
     drive_clock(ocean, scene, prop="time")
     _set_fade(fade, FADE_START_TILES * ocean.spatial_size, FADE_END_TILES * ocean.spatial_size)
     obj.update_tag()
-    return [
-        f"Ocean modifier: {wind:g} m/s {values['sea_spectrum'].replace('_', '-')} waves, "
-        f"tile {ocean.spatial_size} m at resolution {resolution} ({cell_size(wind, resolution):.2f} m)"
-    ]
 
 
 def _set_fade(modifier, start, end):
     set_wave_input(modifier, "Fade Start", float(start))
     set_wave_input(modifier, "Fade End", float(end))
-
-
-def remove_sea(obj):
-    """Removes the open sea's two modifiers (and the Ocean modifier's time driver)."""
-    check_editable(obj)
-    found = sea_modifiers(obj)
-    if found is None:
-        return []
-    ocean, fade = found
-    obj.driver_remove(f'modifiers["{ocean.name}"].time')
-    for modifier in (fade, ocean):
-        obj.modifiers.remove(modifier)
-    return ["removed the Ocean modifier and the sea's fade"]
 
 
 def whitecaps_input(material):

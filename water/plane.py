@@ -12,6 +12,7 @@ from ..nodes.ocean_material import make_ocean_material
 from ..presets import schema
 from . import mirror, open_sea, surroundings, waves
 from .editable import check_editable
+from .grid import grid_mesh
 from .sea_mesh import new_sea_mesh
 from .values import write_values
 
@@ -34,23 +35,7 @@ def new_water_mesh(name, size, resolution=2):
     """A square grid of edge `size` in the XY plane, `resolution` vertices a side, UVs 0..1 across it."""
     size = schema.clamp_values({"size": size})["size"]
     n = min(schema.clamp_values({"resolution": resolution})["resolution"], max_resolution())
-    axis = np.linspace(-size / 2, size / 2, n)
-    x, y = np.meshgrid(axis, axis)
-    co = np.column_stack([x.ravel(), y.ravel(), np.zeros(n * n)])
-    corner = (np.arange(n - 1)[:, None] * n + np.arange(n - 1)[None, :]).ravel()
-    quads = np.column_stack([corner, corner + 1, corner + n + 1, corner + n])  # counter-clockwise: +Z up
-    mesh = bpy.data.meshes.new(name)
-    mesh.vertices.add(n * n)
-    mesh.vertices.foreach_set("co", co.astype(np.float32).ravel())
-    mesh.loops.add(quads.size)
-    mesh.loops.foreach_set("vertex_index", quads.astype(np.int32).ravel())
-    mesh.polygons.add(len(quads))
-    mesh.polygons.foreach_set("loop_start", (np.arange(len(quads)) * 4).astype(np.int32))
-    uv = mesh.uv_layers.new(name="UVMap")
-    uv.data.foreach_set("uv", (co[quads.ravel(), :2] / size + 0.5).astype(np.float32).ravel())
-    mesh.update(calc_edges=True)
-    mesh.polygons.foreach_set("use_smooth", np.ones(len(quads), dtype=bool))
-    return mesh
+    return grid_mesh(name, np.linspace(-size / 2, size / 2, n), size)
 
 
 def dress_water(obj, scene, values):

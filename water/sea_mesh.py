@@ -8,10 +8,10 @@ sea's fade reads it after the Ocean modifier has moved the point). UVs are metre
 so the bump taps keep the seeds' ocean scale whatever the sea's size.
 """
 
-import bpy
 import numpy as np
 
 from ..nodes.sea_fade import REST_ATTRIBUTE
+from .grid import grid_mesh
 
 UV_METRES = 128.0  # the seeds' ocean plane: its bump taps tile the same on the sea
 INNER_SHARE = 0.5  # of the points along an axis, evenly spaced around the centre
@@ -60,23 +60,9 @@ def new_sea_mesh(name, size, points, spacing, even_reach=0.0):
     """A smooth-shaded grid of `points` x `points` (made odd) over `size` metres, even `spacing`
     in the middle (out to at least `even_reach`), with UVs and the `water_rest` attribute."""
     points = max(5, points | 1)
-    axis = sea_axis(points, size, spacing, even_reach)
-    n = len(axis)
-    x, y = np.meshgrid(axis, axis)
-    co = np.column_stack([x.ravel(), y.ravel(), np.zeros(n * n)])
-    corner = (np.arange(n - 1)[:, None] * n + np.arange(n - 1)[None, :]).ravel()
-    quads = np.column_stack([corner, corner + 1, corner + n + 1, corner + n])
-    mesh = bpy.data.meshes.new(name)
-    mesh.vertices.add(n * n)
-    mesh.vertices.foreach_set("co", co.astype(np.float32).ravel())
-    mesh.loops.add(quads.size)
-    mesh.loops.foreach_set("vertex_index", quads.astype(np.int32).ravel())
-    mesh.polygons.add(len(quads))
-    mesh.polygons.foreach_set("loop_start", (np.arange(len(quads)) * 4).astype(np.int32))
-    uv = mesh.uv_layers.new(name="UVMap")
-    uv.data.foreach_set("uv", (co[quads.ravel(), :2] / UV_METRES + 0.5).astype(np.float32).ravel())
+    mesh = grid_mesh(name, sea_axis(points, size, spacing, even_reach), UV_METRES)
     rest = mesh.attributes.new(REST_ATTRIBUTE, "FLOAT_VECTOR", "POINT")
-    rest.data.foreach_set("vector", co.astype(np.float32).ravel())
-    mesh.update(calc_edges=True)
-    mesh.polygons.foreach_set("use_smooth", np.ones(len(quads), dtype=bool))
+    co = np.zeros(len(mesh.vertices) * 3, dtype=np.float32)
+    mesh.vertices.foreach_get("co", co)
+    rest.data.foreach_set("vector", co)
     return mesh
