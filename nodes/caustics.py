@@ -11,7 +11,7 @@ geometric normal, d = `water_depth`):
   sunlight came down along the sun's refracted direction `r_s`, so it crossed the surface
   `d / cos_s` back up along `r_s`. The sum of the two
   offsets, brought into the water's object space (Vector Transform) and divided by
-  `water_uv_size` (metres across the UV 0..1, stored by the surroundings), is the UV offset
+  `water_uv_size` (metres per UV unit, stored by the surroundings), is the UV offset
   from this point of the surface to where the bed's light came through;
 * there the caustic tile (`caustics_map.py`: light refracted through the bump map's own
   surface, mean 1) is read at the bump's scrolled, wind-aligned UV, divided by

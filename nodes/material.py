@@ -47,25 +47,28 @@ def make_water_material(name="Water", scene=None, image=None, sun=None):
     tree = material.node_tree
     water = tree.nodes.new("ShaderNodeGroup")
     water.node_tree, water.name, water.location, water.width = group, WATER_NODE, (-150, 0), 220
-    zero = tree.nodes.new("ShaderNodeValue")
-    zero.name, zero.label, zero.location = "Thickness", "Thickness 0 (one interface)", (-150, -420)
-    zero.outputs[0].default_value = 0.0
     output = tree.nodes.new("ShaderNodeOutputMaterial")
     output.location = (150, 0)
     tree.links.new(water.outputs["Shader"], output.inputs["Surface"])
+    trace_refraction(material, output)
+    drive_time(material, scene)
+    drive_sun(material, sun if sun is not None else first_sun(scene))
+    return material
+
+
+def trace_refraction(material, output):
+    """What EEVEE needs to trace refraction through the water's one surface."""
+    zero = material.node_tree.nodes.new("ShaderNodeValue")
+    zero.name, zero.label = "Thickness", "Thickness 0 (one interface)"
+    zero.location = (output.location[0] - 300, output.location[1] - 420)
+    zero.outputs[0].default_value = 0.0
     # Thickness 0: EEVEE models one interface and mixes the closures linearly;
     # left unconnected, the object gets a thickness and the refraction's weight is squared.
-    tree.links.new(zero.outputs[0], output.inputs["Thickness"])
-
-    # What EEVEE needs to trace refraction through this surface.
+    material.node_tree.links.new(zero.outputs[0], output.inputs["Thickness"])
     material.surface_render_method = "DITHERED"
     material.use_raytrace_refraction = True
     material.thickness_mode = "SLAB"
     material.use_backface_culling = False
-
-    drive_time(material, scene)
-    drive_sun(material, sun if sun is not None else first_sun(scene))
-    return material
 
 
 def new_node_material(name):
@@ -168,17 +171,23 @@ def drive_sun(material, sun):
 
     With `sun` None they are the reference's default light, white, and `Sun Lit` is 0.
     """
-    node = water_node(material)
-    direction, color = node.inputs["Sun Direction"], node.inputs["Sun Color"]
+    drive_sun_inputs(water_node(material), sun)
+
+
+def drive_sun_inputs(node, sun):
+    """`drive_sun` on a group node: the lake's, or the ocean shading's (which has no Sun Color)."""
+    direction, color = node.inputs["Sun Direction"], node.inputs.get("Sun Color")
     lit = node.inputs.get("Sun Lit")  # caustics need a sun; absent from groups before version 4
     for i in range(3):
         direction.driver_remove("default_value", i)
-        color.driver_remove("default_value", i)
+        if color is not None:
+            color.driver_remove("default_value", i)
     if lit is not None:
         lit.driver_remove("default_value")
     if sun is None:
         direction.default_value = water_surface.DEFAULT_SUN
-        color.default_value = (1.0, 1.0, 1.0, 1.0)
+        if color is not None:
+            color.default_value = (1.0, 1.0, 1.0, 1.0)
         if lit is not None:
             lit.default_value = 0.0
         return
@@ -187,4 +196,5 @@ def drive_sun(material, sun):
     for i in range(3):
         # RNA stores matrices by column: matrix_world[2] is the local Z axis in world space.
         drive_socket(direction, i, "-z", [("z", "OBJECT", sun, f"matrix_world[2][{i}]")])
-        drive_socket(color, i, "c", [("c", "OBJECT", sun, f"data.color[{i}]")])
+        if color is not None:
+            drive_socket(color, i, "c", [("c", "OBJECT", sun, f"data.color[{i}]")])

@@ -8,12 +8,20 @@ colour) and hands it to `Water Ocean Shade`:
 `F = dot(-eye, n) / 2 + 0.5`, `deep * F + sky * (1 - F) + pow(mean(sky), Glint Power)`,
 unlit, as the seeds draw it. Where the mesh carries foam (the open sea's
 Ocean modifier, `sea_fade.py`) the crests turn to white foam lit by the scene.
+
+With the surroundings' attributes (`water_depth`, `water_shore_distance`, `water_surroundings`,
+as on the lake), the lake's rules apply: the bed is seen through the water at
+`T = exp(-Absorption x path)` (`water_surface.transmittance_nodes`), refracted and lit by the
+caustics (`caustics.py`), and the deep colour takes the rest, `deep (1 - T)`; the shore foam is
+the lake's coverage, whichever of it and the whitecaps covers more. Without the attributes
+`T` is 0 and the foam 0: the seeds' ocean exactly.
 Two groups, because a shader group cannot hold the
 world's image: the lookup sits between them in the material.
 """
 
+from . import bump_uv, caustics, water_surface
 from .bump_uv import TIME_INPUT
-from .spec import BUMP_IMAGE, GroupSpec, Node, Socket, math, vmath
+from .spec import BUMP_IMAGE, GroupSpec, Node, Socket, attribute, group_node, math, vmath
 from .water_waves import NORMAL_ATTRIBUTE
 
 NORMAL_NAME = "Water Ocean Normal"
@@ -177,83 +185,153 @@ NORMAL_SPEC = GroupSpec(
     ),
 )
 
+SEA_ABSORPTION = (0.4, 0.08, 0.04, 1.0)  # per metre: clear sea water, red gone first
+
+
+def _shade_input(name):
+    """The lake's input `name`, shared with the ocean (the same meaning, the same preset key)."""
+    return next(socket for socket in water_surface.INPUTS if socket.name == name)
+
+
+SHADE_INPUTS = (
+    Socket("Normal", "NodeSocketVector", (0.0, 0.0, 1.0), hide_value=True, tooltip="Shading normal n"),
+    Socket("Sky", "NodeSocketColor", (0.5, 0.7, 1.0, 1.0), tooltip="The sky seen in the reflected direction"),
+    Socket(
+        "Deep Color",
+        "NodeSocketColor",
+        DEEP_BLUE,
+        tooltip="Colour of the deep water (the seeds' deep blue); with the surroundings, what the "
+        "water scatters back where it hides the bed",
+    ),
+    Socket(
+        "Glint Power",
+        "NodeSocketFloat",
+        30.0,
+        min=1.0,
+        max=1000.0,
+        tooltip="The glint is mean(sky) to this power: only the brightest sky glints",
+    ),
+    Socket(
+        "Foam",
+        "NodeSocketFloat",
+        0.0,
+        min=0.0,
+        max=1.0,
+        hide_value=True,
+        tooltip="The Ocean modifier's foam here (0 where the mesh has none)",
+    ),
+    Socket(
+        "Whitecaps",
+        "NodeSocketFloat",
+        1.0,
+        min=0.0,
+        max=WHITECAPS_MAX,
+        tooltip="How much of the Ocean modifier's foam shows as white, sunlit foam on the crests (0 = none)",
+    ),
+    # The surroundings (depth colour, shore foam, caustics), as on the lake: nothing without them.
+    *bump_uv.SCROLL_INPUTS,
+    TIME_INPUT,
+    Socket(
+        "Absorption",
+        "NodeSocketColor",
+        SEA_ABSORPTION,
+        tooltip="How much of each colour the water absorbs per metre seen through it (needs the "
+        "surroundings' depth): where it lets the bed through, the bed shows instead of Deep Color",
+    ),
+    _shade_input("Foam Width"),
+    _shade_input("Foam Amount"),
+    _shade_input("Sun Direction"),
+    caustics.CAUSTICS_INPUT,
+    caustics.CAUSTICS_SCALE_INPUT,
+    caustics.SUN_LIT_INPUT,
+)
+
+_T_NODES, _T_LINKS = water_surface.transmittance_nodes()
+
 SHADE_SPEC = GroupSpec(
     name=SHADE_NAME,
-    version=2,  # 2: whitecaps (white, scene-lit foam where `Foam` is high)
+    version=3,  # 2: whitecaps; 3: depth colour, shore foam and caustics from the surroundings
     description="Ocean colour: deep blue and the reflected sky by the ocean Fresnel, plus the glint; "
-    "white lit foam on the crests",
-    inputs=(
-        Socket("Normal", "NodeSocketVector", (0.0, 0.0, 1.0), hide_value=True, tooltip="Shading normal n"),
-        Socket(
-            "Sky", "NodeSocketColor", (0.5, 0.7, 1.0, 1.0), tooltip="The sky seen in the reflected direction"
-        ),
-        Socket(
-            "Deep Color",
-            "NodeSocketColor",
-            DEEP_BLUE,
-            tooltip="Colour of the deep water (the seeds' deep blue)",
-        ),
-        Socket(
-            "Glint Power",
-            "NodeSocketFloat",
-            30.0,
-            min=1.0,
-            max=1000.0,
-            tooltip="The glint is mean(sky) to this power: only the brightest sky glints",
-        ),
-        Socket(
-            "Foam",
-            "NodeSocketFloat",
-            0.0,
-            min=0.0,
-            max=1.0,
-            hide_value=True,
-            tooltip="The Ocean modifier's foam here (0 where the mesh has none)",
-        ),
-        Socket(
-            "Whitecaps",
-            "NodeSocketFloat",
-            1.0,
-            min=0.0,
-            max=WHITECAPS_MAX,
-            tooltip="How much of the Ocean modifier's foam shows as white, sunlit foam on the crests "
-            "(0 = none)",
-        ),
-    ),
+    "white lit foam on the crests; with the surroundings, the bed seen through shallow water, "
+    "shore foam and caustics",
+    inputs=SHADE_INPUTS,
     outputs=(Socket("Shader", "NodeSocketShader"),),
     nodes={
         "geometry": Node("ShaderNodeNewGeometry", 1),
         "cos": vmath("DOT_PRODUCT", 2, "dot(-eye, n)"),
         "F": math("MULTIPLY_ADD", 3, "F = dot / 2 + 0.5", b=0.5, c=0.5),
         "one_minus_F": math("SUBTRACT", 4, "1 - F", a=1.0),
-        "deep": vmath("SCALE", 5, "deep * F"),
+        # Through the water: T = exp(-Absorption x path) where the surroundings are measured, else 0
+        # (the seeds' ocean, all deep colour); the bed shows at T, the deep colour at 1 - T.
+        **_T_NODES,
+        "flag": attribute(water_surface.FLAG_ATTRIBUTE, 14, "water_surroundings (1 = measured)"),
+        "t_seen": vmath("SCALE", 24, "T, 0 without surroundings"),
+        "hidden": vmath("SUBTRACT", 25, "1 - T", a=(1.0, 1.0, 1.0)),
+        "deep_hides": vmath("MULTIPLY", 26, "deep x (1 - T)"),
+        "deep": vmath("SCALE", 27, "deep (1 - T) F"),
         "sky": vmath("SCALE", 5, "sky * (1 - F)"),
         "mean": vmath("DOT_PRODUCT", 5, "mean(sky)", b=(1 / 3, 1 / 3, 1 / 3)),
         "glint": math("POWER", 6, "pow(mean, Glint Power)"),
         "glint_v": Node("ShaderNodeCombineXYZ", 7, label="glint (white)"),
-        "water": vmath("ADD", 7),
-        "color": vmath("ADD", 8, "colour"),
-        "emit": Node("ShaderNodeEmission", 9, values={"Strength": 1.0}, label="unlit"),
-        # Whitecaps: the foam's crests (smoothstep over FOAM_EDGES) times the strength, lit white.
+        "water": vmath("ADD", 28),
+        "color": vmath("ADD", 29, "colour"),
+        "emit": Node("ShaderNodeEmission", 30, values={"Strength": 1.0}, label="unlit"),
+        # The bed, refracted, at F T x the caustic factor (`caustics.py`).
+        "bump_uv": group_node(bump_uv.NAME, 12, "scrolled bump UV (foam, caustics)"),
+        "caustics": group_node(caustics.NAME, 24, "caustic factor"),
+        "lit_bed": vmath("SCALE", 25, "T x caustics"),
+        "seen": vmath("SCALE", 28, "F T x caustics"),
+        "refraction": Node(
+            "ShaderNodeBsdfRefraction",
+            30,
+            {"distribution": "GGX"},
+            {"Roughness": 0.0, "IOR": water_surface.IOR},
+            label="the bed, refracted",
+        ),
+        "water_shader": Node("ShaderNodeAddShader", 31, label="unlit + refraction"),
+        # Foam: whitecaps (the foam's crests, smoothstep over FOAM_EDGES, times the strength) or
+        # shore foam (the lake's coverage), whichever covers more; white, lit.
         "crest": Node(
             "ShaderNodeMapRange",
-            8,
+            28,
             {"data_type": "FLOAT", "interpolation_type": "SMOOTHSTEP", "clamp": True},
             {"From Min": FOAM_EDGES[0], "From Max": FOAM_EDGES[1]},
             label="foam on the crests",
         ),
-        "cover": math("MULTIPLY", 9, "whitecap cover", clamp=True),
+        "cover": math("MULTIPLY", 29, "whitecap cover", clamp=True),
+        "shore_foam": group_node(water_surface.FOAM_NAME, 28, "shore foam coverage"),
+        "foam_cover": math("MAXIMUM", 30, "foam cover"),
+        # Lit from 4.5; EEVEE in 4.2 drops the traced refraction beside a diffuse closure, so there
+        # the foam is unlit white, as on the lake.
         "foam_bsdf": Node(
-            "ShaderNodeBsdfDiffuse", 9, values={"Color": (*FOAM_WHITE, 1.0)}, label="white foam, lit"
+            "ShaderNodeBsdfDiffuse",
+            31,
+            values={"Color": (*FOAM_WHITE, 1.0)},
+            label="white foam, lit",
+            since=water_surface.LIT_FOAM_SINCE,
         ),
-        "mix": Node("ShaderNodeMixShader", 10, label="water or foam"),
+        "foam_glow": Node(
+            "ShaderNodeEmission",
+            31,
+            values={"Color": (*FOAM_WHITE, 1.0), "Strength": 1.0},
+            label="white foam, unlit (before 4.5)",
+            before=water_surface.LIT_FOAM_SINCE,
+        ),
+        "mix": Node("ShaderNodeMixShader", 32, label="water or foam"),
     },
+    includes=(water_surface.FOAM_SPEC,),
     links=(
         ("geometry:Incoming", "cos:#0"),
         ("input:Normal", "cos:#1"),
         ("cos:Value", "F:#0"),
         ("F:Value", "one_minus_F:#1"),
-        ("input:Deep Color", "deep:#0"),
+        *_T_LINKS,
+        ("transmit:Vector", "t_seen:#0"),
+        ("flag:Fac", "t_seen:Scale"),
+        ("t_seen:Vector", "hidden:#1"),
+        ("input:Deep Color", "deep_hides:#0"),
+        ("hidden:Vector", "deep_hides:#1"),
+        ("deep_hides:Vector", "deep:#0"),
         ("F:Value", "deep:Scale"),
         ("input:Sky", "sky:#0"),
         ("one_minus_F:Value", "sky:Scale"),
@@ -268,12 +346,38 @@ SHADE_SPEC = GroupSpec(
         ("water:Vector", "color:#0"),
         ("glint_v:Vector", "color:#1"),
         ("color:Vector", "emit:Color"),
+        ("input:Wave Length", "bump_uv:Wave Length"),
+        ("input:Wind Direction", "bump_uv:Wind Direction"),
+        ("input:Wind Force", "bump_uv:Wind Force"),
+        ("input:Time", "bump_uv:Time"),
+        ("bump_uv:Vector", "caustics:Vector"),
+        ("input:Wave Length", "caustics:Wave Length"),
+        ("input:Wind Direction", "caustics:Wind Direction"),
+        ("input:Sun Direction", "caustics:Sun Direction"),
+        ("input:Absorption", "caustics:Absorption"),
+        ("input:Caustics", "caustics:Caustics"),
+        ("input:Caustics Scale", "caustics:Caustics Scale"),
+        ("input:Sun Lit", "caustics:Sun Lit"),
+        ("t_seen:Vector", "lit_bed:#0"),
+        ("caustics:Factor", "lit_bed:Scale"),
+        ("lit_bed:Vector", "seen:#0"),
+        ("F:Value", "seen:Scale"),
+        ("seen:Vector", "refraction:Color"),
+        ("input:Normal", "refraction:Normal"),
+        ("emit:Emission", "water_shader:#0"),
+        ("refraction:BSDF", "water_shader:#1"),
         ("input:Foam", "crest:Value"),
         ("crest:Result", "cover:#0"),
         ("input:Whitecaps", "cover:#1"),
-        ("cover:Value", "mix:Fac"),
-        ("emit:Emission", "mix:#1"),
+        ("bump_uv:Vector", "shore_foam:Vector"),
+        ("input:Foam Width", "shore_foam:Foam Width"),
+        ("input:Foam Amount", "shore_foam:Foam Amount"),
+        ("cover:Value", "foam_cover:#0"),
+        ("shore_foam:Coverage", "foam_cover:#1"),
+        ("foam_cover:Value", "mix:Fac"),
+        ("water_shader:Shader", "mix:#1"),
         ("foam_bsdf:BSDF", "mix:#2"),
+        ("foam_glow:Emission", "mix:#2"),
         ("mix:Shader", "output:Shader"),
     ),
 )

@@ -13,7 +13,14 @@ import bpy
 from . import SPECS, ocean, sea_fade
 from .builder import ensure_group
 from .bump_image import ensure_bump_image
-from .material import drive_clock, drive_socket, new_node_material
+from .material import (
+    drive_clock,
+    drive_socket,
+    drive_sun_inputs,
+    first_sun,
+    new_node_material,
+    trace_refraction,
+)
 
 OCEAN_NODE = "Water Ocean"
 NORMAL_NODE = "Water Ocean Normal"
@@ -80,7 +87,10 @@ def make_ocean_material(name="Ocean", scene=None):
     foam.attribute_type, foam.attribute_name = "GEOMETRY", sea_fade.WHITECAPS_ATTRIBUTE
     foam.name, foam.label, foam.location = FOAM_NODE, "whitecaps (open sea)", (-300, -350)
     tree.links.new(foam.outputs["Fac"], shade.inputs["Foam"])
+    trace_refraction(material, output)  # the bed through shallow water, with the surroundings
     drive_clock(normal.inputs["Time"], scene)
+    drive_clock(shade.inputs["Time"], scene)
+    drive_sun_inputs(shade, first_sun(scene))
     return material
 
 

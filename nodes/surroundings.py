@@ -79,7 +79,8 @@ from .spec import GroupSpec, Node, Socket, math, vmath
 NAME = "Water Surroundings"
 VERSION = 2  # 2: keeps FLOOR_ATTRIBUTE for `Water Surroundings Sample`
 SAMPLE_NAME = "Water Surroundings Sample"
-SAMPLE_VERSION = 2  # 2: stores UV_SIZE_ATTRIBUTE for the caustics' parallax
+SAMPLE_VERSION = 3  # 2: stores UV_SIZE_ATTRIBUTE for the caustics' parallax; 3: per UV unit
+UV_MAP = "UVMap"  # the water meshes' UV map (`water/grid.py`)
 CACHE_INPUT = "Cache"
 HEIGHT_ATTRIBUTE = ".water_height"  # signed height h (below), on the cache's geometry only
 FLOOR_ATTRIBUTE = ".water_floor"  # z of what is below (object units), on the cache's geometry only
@@ -87,7 +88,7 @@ NO_FLOOR = -1.0e30  # `FLOOR_ATTRIBUTE` where nothing is below: any depth from i
 DEPTH_ATTRIBUTE = "water_depth"
 SHORE_ATTRIBUTE = "water_shore_distance"
 FLAG_ATTRIBUTE = "water_surroundings"
-UV_SIZE_ATTRIBUTE = "water_uv_size"  # object-space metres across the water's UV 0..1 (its rest width)
+UV_SIZE_ATTRIBUTE = "water_uv_size"  # object-space metres per UV unit (the lake's rest width)
 MIRRORED_ATTRIBUTE = ".water_mirrored"  # on the realized surroundings only, never on the water
 FAR = 1000.0  # metres: "nothing there"
 RAY_LENGTH = 1.0e6  # object units: rays reach everything in any sane scene
@@ -428,10 +429,29 @@ def _build_sample():
         "store_depth": _store(DEPTH_ATTRIBUTE, 10, f"store '{DEPTH_ATTRIBUTE}'"),
         "store_shore": _store(SHORE_ATTRIBUTE, 11, f"store '{SHORE_ATTRIBUTE}'"),
         "store_flag": _store(FLAG_ATTRIBUTE, 12, f"store '{FLAG_ATTRIBUTE}'"),
-        # The rest grid's width: the UV runs 0..1 across it, so the shader turns metres into UV.
+        # Metres per UV unit, so the shader turns metres into UV: the rest grid's width over the
+        # UV's span across it (the lake's UV runs 0..1 across it, the open sea's 1 per 128 m);
+        # the width alone when the mesh has no `UV_MAP`.
         "bounds": Node("GeometryNodeBoundBox", 3, label="rest grid bounds"),
         "extent": vmath("SUBTRACT", 4, "max - min"),
         "extent_xyz": Node("ShaderNodeSeparateXYZ", 5, label="width"),
+        "uv": Node(
+            "GeometryNodeInputNamedAttribute",
+            2,
+            {"data_type": "FLOAT_VECTOR"},
+            {"Name": UV_MAP},
+            label=UV_MAP,
+        ),
+        "uv_stats": Node(
+            "GeometryNodeAttributeStatistic",
+            3,
+            {"data_type": "FLOAT_VECTOR", "domain": "CORNER"},
+            label="UV span",
+        ),
+        "uv_span": Node("ShaderNodeSeparateXYZ", 4, label="UV span"),
+        "has_uv": _compare("GREATER_THAN", 5, "has UVs", b=1.0e-6),
+        "span": _switch(6, "span, 1 without UVs", false=1.0),
+        "per_uv": math("DIVIDE", 7, "metres per UV unit"),
         "store_uv_size": _store(UV_SIZE_ATTRIBUTE, 13, f"store '{UV_SIZE_ATTRIBUTE}'"),
     }
     links = [
@@ -492,8 +512,16 @@ def _build_sample():
         ("bounds:Max", "extent:#0"),
         ("bounds:Min", "extent:#1"),
         ("extent:Vector", "extent_xyz:Vector"),
+        ("cache:Geometry", "uv_stats:Geometry"),
+        ("uv:Attribute", "uv_stats:Attribute"),
+        ("uv_stats:Range", "uv_span:Vector"),
+        ("uv_span:X", "has_uv:#0"),
+        ("has_uv:Result", "span:Switch"),
+        ("uv_span:X", "span:True"),
+        ("extent_xyz:X", "per_uv:#0"),
+        ("span:Output", "per_uv:#1"),
         ("store_flag:Geometry", "store_uv_size:Geometry"),
-        ("extent_xyz:X", "store_uv_size:Value"),
+        ("per_uv:Value", "store_uv_size:Value"),
         ("store_uv_size:Geometry", "output:Geometry"),
     ]
     return nodes, tuple(links)
@@ -507,7 +535,7 @@ SAMPLE_SPEC = GroupSpec(
     description=(
         f"Reads '{DEPTH_ATTRIBUTE}', '{SHORE_ATTRIBUTE}' and '{FLAG_ATTRIBUTE}' from the water's "
         f"surroundings cache (its '{NAME}' modifier), point by point, the depth following the waves; "
-        f"stores '{UV_SIZE_ATTRIBUTE}', the rest grid's width"
+        f"stores '{UV_SIZE_ATTRIBUTE}', metres per UV unit"
     ),
     inputs=(
         Socket("Geometry", "NodeSocketGeometry"),

@@ -346,13 +346,13 @@ def _weight_nodes():
     return nodes, links
 
 
-def _depth_nodes():
-    """Beer-Lambert: `T = exp(-Absorption * path)`, `path` = the refracted ray's way down to the bed.
+def transmittance_nodes(absorption="input:Absorption"):
+    """Beer-Lambert: `T = exp(-Absorption * path)` ("transmit:Vector"), `path` = the refracted ray's
+    way down to the bed. Needs a "geometry" node (Geometry); shared with the ocean shading.
 
     `cos_i = eye . N` with the geometric normal; Snell at IOR 1.33 gives
     `cos_t^2 = 1 - (1 - cos_i^2) / 1.33^2` and `path = depth / cos_t`; per channel
-    `exp(-x)` is `(1 / e)^x`. The scattered light is `Scatter Color * (1 - T)`. With no
-    `water_depth` attribute the depth reads 0, so `T = 1` and nothing is scattered.
+    `exp(-x)` is `(1 / e)^x`. With no `water_depth` attribute the depth reads 0, so `T = 1`.
     """
     nodes = {
         "depth": attribute(DEPTH_ATTRIBUTE, 14, "water_depth (m)"),
@@ -367,8 +367,6 @@ def _depth_nodes():
         "optical_xyz": Node("ShaderNodeSeparateXYZ", 21, label="per channel"),
         **{f"transmit_{c}": math("POWER", 22, f"T.{c} = exp(-{c})", a=_math.exp(-1.0)) for c in "xyz"},
         "transmit": Node("ShaderNodeCombineXYZ", 23, label="T"),
-        "one_minus_t": vmath("SUBTRACT", 24, "1 - T", a=(1.0, 1.0, 1.0)),
-        "scatter": vmath("MULTIPLY", 25, "Scatter Color x (1 - T)"),
     }
     links = [
         ("geometry:Incoming", "cos_i:#0"),
@@ -379,7 +377,7 @@ def _depth_nodes():
         ("cos_t2:Value", "inv_cos_t:#0"),
         ("depth:Fac", "path:#0"),
         ("inv_cos_t:Value", "path:#1"),
-        ("input:Absorption", "optical:#0"),
+        (absorption, "optical:#0"),
         ("path:Value", "optical:Scale"),
         ("optical:Vector", "optical_xyz:Vector"),
     ]
@@ -388,6 +386,16 @@ def _depth_nodes():
             (f"optical_xyz:{c.upper()}", f"transmit_{c}:#1"),
             (f"transmit_{c}:Value", f"transmit:{c.upper()}"),
         ]
+    return nodes, links
+
+
+def _depth_nodes():
+    """The transmittance `T`, and the light the water scatters back, `Scatter Color * (1 - T)`."""
+    nodes, links = transmittance_nodes()
+    nodes |= {
+        "one_minus_t": vmath("SUBTRACT", 24, "1 - T", a=(1.0, 1.0, 1.0)),
+        "scatter": vmath("MULTIPLY", 25, "Scatter Color x (1 - T)"),
+    }
     links += [
         ("transmit:Vector", "one_minus_t:#1"),
         ("input:Scatter Color", "scatter:#0"),

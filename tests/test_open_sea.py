@@ -317,13 +317,17 @@ def test_a_saved_sea_animates_and_renders_the_same_without_the_add_on(
 ):
     """Point 6: the Ocean modifier's clock is a simple-expression driver, the fade a Geometry
     Nodes modifier and the floating two constraints, so with the add-on disabled and auto-run
-    off the sea still moves, the cube still rides it, and EEVEE and Cycles render the same."""
+    off the sea still moves, the cube still rides it, and EEVEE and Cycles render the same. A
+    sloping bed under it gives it surroundings: its depth follows the waves without the add-on."""
     import addon_utils
 
     scene.render.resolution_x, scene.render.resolution_y = 64, 36
     sun = bpy.data.objects.new("Sun", bpy.data.lights.new("Sun", "SUN"))
     sun.rotation_euler = (0.8, 0.0, 0.5)
     scene.collection.objects.link(sun)
+    bed = bpy.data.meshes.new("Bed")
+    bed.from_pydata([(-30, 0, -1), (30, 0, -1), (30, 40, -12), (-30, 40, -12)], [], [(0, 1, 2, 3)])
+    scene.collection.objects.link(bpy.data.objects.new("Bed", bed))
     sea = _open_sea(scene, resolution=129, sea_wind_speed=15.0, name="Sea").object
     bpy.ops.mesh.primitive_cube_add(size=1.0, location=(2.0, 8.0, 3.0))
     _api().float_on_water(bpy.context.active_object, sea)
@@ -334,11 +338,18 @@ def test_a_saved_sea_animates_and_renders_the_same_without_the_add_on(
         for frame in (1, 12):
             scene.frame_set(frame)
             _rest, position = _evaluated_points(bpy.data.objects["Sea"])
-            cube = bpy.data.objects["Cube"].evaluated_get(bpy.context.evaluated_depsgraph_get())
-            found[frame] = (position[:, 2].copy(), cube.matrix_world.translation.z)
+            depsgraph = bpy.context.evaluated_depsgraph_get()
+            cube = bpy.data.objects["Cube"].evaluated_get(depsgraph)
+            mesh = bpy.data.objects["Sea"].evaluated_get(depsgraph).data
+            depth = np.zeros(len(mesh.vertices))
+            mesh.attributes["water_depth"].data.foreach_get("value", depth)
+            found[frame] = (position[:, 2].copy(), cube.matrix_world.translation.z, depth)
         return found
 
     with_addon = state()
+    wet = with_addon[1][2] < 100.0
+    assert wet.sum() > 100, "the sea sees the bed"
+    assert np.abs(with_addon[1][2][wet] - with_addon[12][2][wet]).max() > 0.1, "its depth moves"
     renders = {}
     engine = scene.render.engine
     for name in (engine, "CYCLES"):
@@ -356,6 +367,7 @@ def test_a_saved_sea_animates_and_renders_the_same_without_the_add_on(
     for frame in (1, 12):
         assert np.abs(without[frame][0] - with_addon[frame][0]).max() < 1e-4, frame
         assert without[frame][1] == pytest.approx(with_addon[frame][1], abs=1e-4)
+        assert np.abs(without[frame][2] - with_addon[frame][2]).max() < 1e-4, frame
     assert np.abs(without[1][0] - without[12][0]).mean() > 0.01, "the sea moves"
     scene.frame_set(12)
     for name in (engine, "CYCLES"):

@@ -25,6 +25,8 @@ _OCEAN_INPUTS = (
     ("shade", "Deep Color"),
     ("shade", "Glint Power"),
 )
+# The ocean shading's surroundings inputs (as the lake's): absent from groups before version 3.
+_OCEAN_SURROUNDINGS = ("Absorption", "Foam Width", "Foam Amount", "Caustics", "Caustics Scale")
 
 # The open sea's Ocean modifier settings the panel shows: (property, label).
 _SEA_PROPS = (
@@ -92,6 +94,7 @@ class VIEW3D_PT_water_surface(bpy.types.Panel):
             return
         if node is None:
             self.draw_ocean(layout, material)
+            self.draw_ocean_surroundings(layout, context.active_object, material)
             if open_sea.is_open_sea(context.active_object):
                 self.draw_sea(layout, context.active_object, material)
             else:
@@ -174,6 +177,17 @@ class VIEW3D_PT_water_surface(bpy.types.Panel):
         nodes = {"normal": normal, "shade": shade}
         for which, name in _OCEAN_INPUTS:
             box.prop(nodes[which].inputs[name], "default_value", text=name)
+
+    def draw_ocean_surroundings(self, layout, obj, material):
+        """The ocean's depth colour, shore foam and caustics, and what it measures them against."""
+        _normal, shade = ocean_nodes(material)
+        box = layout.box()
+        box.label(text="Surroundings", icon="OUTLINER_COLLECTION")
+        box.use_property_split = True
+        for name in _OCEAN_SURROUNDINGS:
+            if name in shade.inputs:
+                box.prop(shade.inputs[name], "default_value", text=name)
+        self.draw_surroundings(box, obj)
 
     def draw_sea(self, layout, obj, material):
         """The open sea's Ocean modifier settings and its whitecaps."""

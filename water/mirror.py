@@ -171,7 +171,8 @@ def setup_mirror(scene, water):
     """Sets `scene` and `water` up for a true mirror; returns what it changed, in words.
 
     Runs again safely: the probe is reused and only settings that differ are changed.
-    Ocean shading needs no mirror (`needs_mirror`): nothing is changed for it.
+    Ocean shading needs no mirror (`needs_mirror`): it gets EEVEE's ray tracing only (its
+    refraction shows the bed through shallow water).
     """
     material = water_material(water)
     if material is None:
@@ -182,13 +183,14 @@ def setup_mirror(scene, water):
     problem = needs_repair(material)
     if problem:
         raise MirrorSetupError(problem)
-    if not needs_mirror(material):
-        return []
     changes = []
     if scene.render.engine == "BLENDER_WORKBENCH":
         scene.render.engine = eevee_engine_id()
         changes.append("render engine set to EEVEE")
+    # Both shadings trace refraction (the ocean's through shallow water to the bed).
     changes += [_SETTING_NAMES[name] for name in enable_ray_tracing(scene)]
+    if not needs_mirror(material):
+        return changes
     if not material.use_raytrace_refraction:
         material.use_raytrace_refraction = True
         changes.append(f"ray-traced refraction on for '{material.name}'")

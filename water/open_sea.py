@@ -191,6 +191,16 @@ def _set_fade(modifier, start, end):
     set_wave_input(modifier, "Fade End", float(end))
 
 
+def crest_height(obj):
+    """Metres the open sea's crests may reach above its rest plane (its significant wave height,
+    object units), 0 for any other water."""
+    found = sea_modifiers(obj)
+    if found is None:
+        return 0.0
+    ocean = found[0]
+    return 4.0 * ocean.wave_scale * HEIGHT_STD_AT_SCALE_1.get(ocean.spectrum, 0.3)
+
+
 def whitecaps_input(material):
     """The ocean shading's `Whitecaps` input, or None."""
     from ..nodes.ocean_material import ocean_nodes

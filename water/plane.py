@@ -45,7 +45,7 @@ def dress_water(obj, scene, values):
         material = make_ocean_material(name=obj.name, scene=scene)
     else:
         material = make_water_material(name=obj.name, scene=scene)
-        write_values(material, values)
+    write_values(material, values)
     obj.data.materials.clear()
     obj.data.materials.append(material)
     # Sunlight goes through water to what lies below (the seeds' refraction map saw the scene
@@ -141,8 +141,8 @@ def add_water(
         if matrix is None:
             matrix = Matrix.LocRotScale(Vector(location), Euler(rotation), None)
         obj.matrix_world = matrix
-        see_surroundings = see_surroundings and not values["sea"]
-        if see_surroundings and surroundings.default_surroundings(obj, scene):
+        # The open sea's graded grid is its own (its even middle is the waves' cell): kept as it is.
+        if see_surroundings and not values["sea"] and surroundings.default_surroundings(obj, scene):
             notes += _densify_for_surroundings(obj, values)
         material = dress_water(obj, scene, values)
         changes = surroundings.ensure_surroundings(obj, scene) if see_surroundings else []

@@ -17,15 +17,21 @@ from ..nodes.material import (
     bump_image,
     drive_clock,
     drive_sun,
+    drive_sun_inputs,
     drive_time,
+    first_sun,
     water_group,
     water_node,
 )
-from ..nodes.ocean_material import NORMAL_NODE, SKY_NODE, ocean_nodes
+from ..nodes.ocean_material import NORMAL_NODE, OCEAN_NODE, SKY_NODE, ocean_nodes
 from .editable import NotEditableError, check_editable, why_not_editable
 
 # Inputs the material drives: never kept or reset, driven again after a repair.
-_DRIVEN = {WATER_NODE: ("Time", "Sun Direction", "Sun Color", "Sun Lit"), NORMAL_NODE: ("Time",)}
+_DRIVEN = {
+    WATER_NODE: ("Time", "Sun Direction", "Sun Color", "Sun Lit"),
+    NORMAL_NODE: ("Time",),
+    OCEAN_NODE: ("Time", "Sun Direction", "Sun Lit"),
+}
 
 
 class RepairError(ValueError):
@@ -231,6 +237,9 @@ def repair_water(material, scene=None):
                 _link(tree, node.outputs["Shader"], output.inputs["Surface"])
         elif spec.name == ocean.NORMAL_NAME:
             drive_clock(node.inputs["Time"], clock_scene)
+        else:  # the ocean shade: the surroundings' foam and caustics follow the clock and the sun
+            drive_clock(node.inputs["Time"], clock_scene)
+            drive_sun_inputs(node, sun if sun is not None else first_sun(clock_scene))
     nodes = ocean_nodes(material)
     if nodes is not None:
         normal, shade = nodes

@@ -48,7 +48,7 @@ from ..nodes import surroundings as spec
 from ..nodes.builder import ensure_group
 from ..nodes.ownership import is_local, mark, role_of
 from ..presets import schema
-from . import plane
+from . import open_sea, plane
 from .editable import check_editable
 from .mirror import rest_bounds
 from .values import is_water
@@ -131,7 +131,10 @@ def coarse_grid_note(water):
     """A sentence when `water`'s grid is too coarse to find a waterline within GRID_SPACING, else None.
 
     Points are added when water is added, never to an existing mesh, which may be the user's.
+    The open sea's grid is graded out to the horizon, its middle spaced by the waves' cell: no note.
     """
+    if open_sea.is_open_sea(water):
+        return None
     low, high = rest_bounds(water)
     size = float(max(high[0] - low[0], high[1] - low[1]))
     side = math.isqrt(len(water.data.vertices))
@@ -196,7 +199,7 @@ def default_surroundings(water, scene):
     to_water = water.matrix_world.inverted_safe()
     low, high = rest_bounds(water)
     waves = wave_modifier(water)
-    top = high[2] + (amplitude_sum(waves) if waves is not None else 0.0)
+    top = high[2] + (amplitude_sum(waves) if waves is not None else open_sea.crest_height(water))
     found = []
     for obj in scene.objects:
         if obj == water or obj.type != "MESH" or is_cache(obj):
@@ -259,8 +262,10 @@ def _fill(collection, water, scene):
 
 
 def _place(water, modifier):
-    """Moves the modifier after `Water Waves`, so it measures the displaced surface."""
-    waves = wave_modifier(water)
+    """Moves the modifier after `Water Waves` (or the open sea's fade), so it measures the
+    displaced surface."""
+    sea = open_sea.sea_modifiers(water)
+    waves = sea[1] if sea is not None else wave_modifier(water)
     if waves is None:
         return []
     index = list(water.modifiers).index

@@ -57,10 +57,14 @@ def read_values(material):
 def write_values(material, values):
     """Sets the shader values among `values` (preset keys), clamped first.
 
-    The plane's keys are ignored, and so is an ocean material: its values live in its own groups.
+    The plane's keys are ignored. On an ocean material the keys its shading shares with the
+    lake's (the bump's scroll, absorption, foam, caustics) go to its `Water Ocean Shade` node.
     Inputs the group lacks, or holds with another type, are skipped; returns the keys set.
     """
     node = water_node(material)
+    if node is None:
+        nodes = ocean_nodes(material)
+        node = nodes[1] if nodes else None
     if node is None:
         return []
     shader_keys = {field.key for field in schema.SHADER_FIELDS}
