@@ -326,7 +326,7 @@ def test_a_saved_sea_animates_and_renders_the_same_without_the_add_on(
     sun.rotation_euler = (0.8, 0.0, 0.5)
     scene.collection.objects.link(sun)
     bed = bpy.data.meshes.new("Bed")
-    bed.from_pydata([(-30, 0, -1), (30, 0, -1), (30, 40, -12), (-30, 40, -12)], [], [(0, 1, 2, 3)])
+    bed.from_pydata([(-150, 0, -1), (150, 0, -1), (150, 200, -40), (-150, 200, -40)], [], [(0, 1, 2, 3)])
     scene.collection.objects.link(bpy.data.objects.new("Bed", bed))
     sea = _open_sea(scene, resolution=129, sea_wind_speed=15.0, name="Sea").object
     bpy.ops.mesh.primitive_cube_add(size=1.0, location=(2.0, 8.0, 3.0))

@@ -1,7 +1,9 @@
-"""Renders the open sea with whitecaps and a floating boat-like object: out/open_sea.png, copied
-to docs/. The sky is the ocean demo's generated image (`render_ocean.sky_world`); the sea is the
-`open_sea` preset at 15 m/s; the boat (a hull and a cabin, joined) floats with
-`api.float_on_water`. Run with `tools/demo sea`.
+"""Renders the open sea: with whitecaps and a floating boat-like object (out/open_sea.png), and
+meeting a low sandy island (out/open_sea_shore.png: the bed through the shallows, shore foam,
+caustics), both copied to docs/. The sky is the ocean demo's generated image
+(`render_ocean.sky_world`); the seas are the `open_sea` preset at 15 and 6 m/s; the boat (a hull
+and a cabin, joined) floats with `api.float_on_water`. Run with `tools/demo sea`
+(`tools/demo sea shore`: the island only).
 """
 
 import math
@@ -43,10 +45,51 @@ def boat(bpy, scene):
     return hull
 
 
+def island(bpy, scene):
+    """A sandy cone 600 m across, its top 2 m out of the water, sloping 1 in 7 to 40 m deep."""
+    bpy.ops.mesh.primitive_cone_add(vertices=96, radius1=300.0, radius2=0.0, depth=42.0)
+    cone = bpy.context.active_object
+    cone.name = "Island"
+    cone.location = (-10.0, 50.0, -19.0)
+    material = bpy.data.materials.new("Sand")
+    if bpy.app.version < (5, 0, 0):
+        material.use_nodes = True
+    bsdf = material.node_tree.nodes["Principled BSDF"]
+    bsdf.inputs["Base Color"].default_value = (0.8, 0.62, 0.38, 1)
+    bsdf.inputs["Roughness"].default_value = 0.9
+    cone.data.materials.append(material)
+    return cone
+
+
+def shore(bpy):
+    """The open sea at 6 m/s round a sandy island, from 14 m up."""
+    scene = harness.clean_scene(width=SIZE[0], height=SIZE[1], samples=8)
+    sky_world(bpy, scene)
+    sun = bpy.data.objects.new("Sun", bpy.data.lights.new("Sun", "SUN"))
+    sun.data.energy = 3.0
+    sun.rotation_euler = (math.radians(45.0), 0.0, math.radians(150.0))
+    scene.collection.objects.link(sun)
+    island(bpy, scene)  # before the sea: the sea gathers what reaches below it
+    api = harness.addon("api")
+    added = api.add_water(scene, preset="open_sea", sea_wind_speed=6.0, wind_direction=(0.8, 0.6))
+    print(added.summary("open_sea"), flush=True)
+    harness.add_camera(scene, (6.0, -2.0, 14.0), (-4.0, 34.0, 0.0), lens=30)
+    scene.frame_set(60)
+    print(f"[shore] open sea round an island, {SIZE[0]} x {SIZE[1]} ...", flush=True)
+    harness.render(scene, OUT / "open_sea_shore.png")
+    shutil.copyfile(OUT / "open_sea_shore.png", DOCS / "open_sea_shore.png")
+
+
 def main():
     start = time.monotonic()
     bpy = harness.start()
     harness.install(harness.build_zip(tempfile.mkdtemp(prefix="water_surface_dist_")))
+    OUT.mkdir(parents=True, exist_ok=True)
+    DOCS.mkdir(parents=True, exist_ok=True)
+    shore(bpy)
+    print(f"wrote {OUT / 'open_sea_shore.png'} in {time.monotonic() - start:.0f} s", flush=True)
+    if sys.argv[1:] == ["shore"]:
+        return 0
     scene = harness.clean_scene(width=SIZE[0], height=SIZE[1], samples=8)
     sky_world(bpy, scene)
     sun = bpy.data.objects.new("Sun", bpy.data.lights.new("Sun", "SUN"))
