@@ -38,7 +38,9 @@ def _tap(key, column):
 
 NORMAL_SPEC = GroupSpec(
     name=NORMAL_NAME,
-    version=1,
+    # 2: a mesh without the attribute transforms +Z, never a zero vector: EEVEE before 5.x
+    # normalises it into NaN, and the NaN, even weighted by 0, turned the whole ocean black.
+    version=2,
     description="Wave normal plus three bump taps; the direction the eye reflects into",
     inputs=(
         Socket(
@@ -70,6 +72,7 @@ NORMAL_SPEC = GroupSpec(
         ),
         "geometry": Node("ShaderNodeNewGeometry", 1),
         "coords": Node("ShaderNodeTexCoord", 1),
+        "safe": vmath("MULTIPLY_ADD", 2, "attribute, or +Z without it", a=(0.0, 0.0, 1.0)),
         "to_world": Node(
             "ShaderNodeVectorTransform",
             2,
@@ -119,7 +122,9 @@ NORMAL_SPEC = GroupSpec(
         "reflect": vmath("REFLECT", 19, "reflect(eye, n)"),
     },
     links=(
-        ("attribute:Vector", "to_world:Vector"),
+        ("hasnt:Value", "safe:#1"),
+        ("attribute:Vector", "safe:#2"),
+        ("safe:Vector", "to_world:Vector"),
         ("attribute:Vector", "has_length:#0"),
         ("has_length:Value", "has:#0"),
         ("has:Value", "hasnt:#1"),
@@ -318,6 +323,10 @@ SHADE_SPEC = GroupSpec(
             before=water_surface.LIT_FOAM_SINCE,
         ),
         "mix": Node("ShaderNodeMixShader", 32, label="water or foam"),
+        # Seen from below (by the bed's light bounces in Cycles), the water lets everything through:
+        # its unlit colour is what the eye sees from above, not a lamp over the bed.
+        "see_through": Node("ShaderNodeBsdfTransparent", 32, label="from below: clear"),
+        "sides": Node("ShaderNodeMixShader", 33, label="above or below"),
     },
     includes=(water_surface.FOAM_SPEC,),
     links=(
@@ -378,6 +387,9 @@ SHADE_SPEC = GroupSpec(
         ("water_shader:Shader", "mix:#1"),
         ("foam_bsdf:BSDF", "mix:#2"),
         ("foam_glow:Emission", "mix:#2"),
-        ("mix:Shader", "output:Shader"),
+        ("geometry:Backfacing", "sides:Fac"),
+        ("mix:Shader", "sides:#1"),
+        ("see_through:BSDF", "sides:#2"),
+        ("sides:Shader", "output:Shader"),
     ),
 )

@@ -356,6 +356,10 @@ def test_a_saved_sea_animates_and_renders_the_same_without_the_add_on(
         scene.render.engine = name
         scene.cycles.samples = 4
         renders[name] = render(scene, f"with_{name}", exr=True)[..., :3]
+        # Not black: a sea without the `water_normal` attribute once rendered black before 5.x.
+        sea_rows = renders[name][-12:]  # the bottom third: sea only
+        print(f"{name}: the sea's mean colour {sea_rows.mean(axis=(0, 1)).round(3)}")
+        assert sea_rows[..., 2].mean() > 0.1, name
     scene.render.engine = engine
     path = tmp_path / "sea.blend"
     bpy.ops.wm.save_as_mainfile(filepath=str(path))
