@@ -90,7 +90,7 @@ class AddedWater:
         text += f" with material '{self.material.name}'"
         if not mirror.needs_mirror(self.material):
             text += "; the ocean reflects the world's sky, no mirror set-up needed"
-        elif self.changes:
+        if self.changes:
             text += "; set-up: " + ", ".join(self.changes)
         return text
 
