@@ -28,6 +28,8 @@ stores three float point attributes, in world metres:
 * `.water_floor` (hidden): z - h / |scale.z|, the object-space height of what lies
   straight below (above, on dry points), `NO_FLOOR` (-1e30) where nothing does: the
   sample group's depth is (z - floor) |scale.z| at any z the waves lift the point to.
+* `.water_uv_size` (hidden): object-space metres per UV unit, the grid's width over its UV
+  map's span (measured here, once, not by the sample group on every frame).
 
 Method, per water point p:
 
@@ -77,7 +79,7 @@ re-evaluate the cache whenever a surroundings object moves or deforms.
 from .spec import GroupSpec, Node, Socket, math, vmath
 
 NAME = "Water Surroundings"
-VERSION = 2  # 2: keeps FLOOR_ATTRIBUTE for `Water Surroundings Sample`
+VERSION = 3  # 2: keeps FLOOR_ATTRIBUTE for `Water Surroundings Sample`; 3: CACHE_UV_SIZE_ATTRIBUTE
 SAMPLE_NAME = "Water Surroundings Sample"
 SAMPLE_VERSION = 3  # 2: stores UV_SIZE_ATTRIBUTE for the caustics' parallax; 3: per UV unit
 UV_MAP = "UVMap"  # the water meshes' UV map (`water/grid.py`)
@@ -89,6 +91,7 @@ DEPTH_ATTRIBUTE = "water_depth"
 SHORE_ATTRIBUTE = "water_shore_distance"
 FLAG_ATTRIBUTE = "water_surroundings"
 UV_SIZE_ATTRIBUTE = "water_uv_size"  # object-space metres per UV unit (the lake's rest width)
+CACHE_UV_SIZE_ATTRIBUTE = ".water_uv_size"  # the same, measured once on the cache
 MIRRORED_ATTRIBUTE = ".water_mirrored"  # on the realized surroundings only, never on the water
 FAR = 1000.0  # metres: "nothing there"
 RAY_LENGTH = 1.0e6  # object units: rays reach everything in any sane scene
@@ -248,6 +251,29 @@ def _build():
         "floor_z": math("SUBTRACT", 32, "floor z = z - h"),
         "floor": _switch(33, f"floor z, {NO_FLOOR:g} if nothing below", false=NO_FLOOR),
         "store_floor": _store(FLOOR_ATTRIBUTE, 35, f"store '{FLOOR_ATTRIBUTE}'"),
+        # 5. Metres per UV unit: the grid's width over its UV's span (the lake's UV runs 0..1
+        #    across it, the open sea's 1 per 128 m); the width alone when the mesh has no UV_MAP.
+        "bounds": Node("GeometryNodeBoundBox", 30, label="grid bounds"),
+        "extent": vmath("SUBTRACT", 31, "max - min"),
+        "extent_xyz": Node("ShaderNodeSeparateXYZ", 32, label="width"),
+        "uv": Node(
+            "GeometryNodeInputNamedAttribute",
+            30,
+            {"data_type": "FLOAT_VECTOR"},
+            {"Name": UV_MAP},
+            label=UV_MAP,
+        ),
+        "uv_stats": Node(
+            "GeometryNodeAttributeStatistic",
+            31,
+            {"data_type": "FLOAT_VECTOR", "domain": "CORNER"},
+            label="UV span",
+        ),
+        "uv_span": Node("ShaderNodeSeparateXYZ", 32, label="UV span"),
+        "has_uv": _compare("GREATER_THAN", 33, "has UVs", b=1.0e-6),
+        "span": _switch(34, "span, 1 without UVs", false=1.0),
+        "per_uv": math("DIVIDE", 35, "metres per UV unit"),
+        "store_uv_size": _store(CACHE_UV_SIZE_ATTRIBUTE, 36, f"store '{CACHE_UV_SIZE_ATTRIBUTE}'"),
     }
     links = [
         ("input:Surroundings", "collection:Collection"),
@@ -336,7 +362,21 @@ def _build():
         ("floor_z:Value", "floor:True"),
         ("store_flag:Geometry", "store_floor:Geometry"),
         ("floor:Output", "store_floor:Value"),
-        ("store_floor:Geometry", "output:Geometry"),
+        ("input:Geometry", "bounds:Geometry"),
+        ("bounds:Max", "extent:#0"),
+        ("bounds:Min", "extent:#1"),
+        ("extent:Vector", "extent_xyz:Vector"),
+        ("input:Geometry", "uv_stats:Geometry"),
+        ("uv:Attribute", "uv_stats:Attribute"),
+        ("uv_stats:Range", "uv_span:Vector"),
+        ("uv_span:X", "has_uv:#0"),
+        ("has_uv:Result", "span:Switch"),
+        ("uv_span:X", "span:True"),
+        ("extent_xyz:X", "per_uv:#0"),
+        ("span:Output", "per_uv:#1"),
+        ("store_floor:Geometry", "store_uv_size:Geometry"),
+        ("per_uv:Value", "store_uv_size:Value"),
+        ("store_uv_size:Geometry", "output:Geometry"),
     ]
     for prefix, height_1, height_2, points, label in (
         ("grid", "grid_h1:Value", "grid_h2:Value", "grid_points", "wet to dry"),
@@ -429,29 +469,16 @@ def _build_sample():
         "store_depth": _store(DEPTH_ATTRIBUTE, 10, f"store '{DEPTH_ATTRIBUTE}'"),
         "store_shore": _store(SHORE_ATTRIBUTE, 11, f"store '{SHORE_ATTRIBUTE}'"),
         "store_flag": _store(FLAG_ATTRIBUTE, 12, f"store '{FLAG_ATTRIBUTE}'"),
-        # Metres per UV unit, so the shader turns metres into UV: the rest grid's width over the
-        # UV's span across it (the lake's UV runs 0..1 across it, the open sea's 1 per 128 m);
-        # the width alone when the mesh has no `UV_MAP`.
+        # Metres per UV unit, so the shader turns metres into UV: measured by the cache (one
+        # value, read at point 0); a cache measured before version 3 has none, and then the
+        # rest grid's width (the lake's UV runs 0..1 across it).
+        "uv_size_read": _read(CACHE_UV_SIZE_ATTRIBUTE, 2, "metres per UV unit (cache)"),
+        "uv_size": _sample("FLOAT", 3, "at point 0: one value"),
+        "has_uv_size": _compare("GREATER_THAN", 4, "measured", b=0.0),
         "bounds": Node("GeometryNodeBoundBox", 3, label="rest grid bounds"),
         "extent": vmath("SUBTRACT", 4, "max - min"),
         "extent_xyz": Node("ShaderNodeSeparateXYZ", 5, label="width"),
-        "uv": Node(
-            "GeometryNodeInputNamedAttribute",
-            2,
-            {"data_type": "FLOAT_VECTOR"},
-            {"Name": UV_MAP},
-            label=UV_MAP,
-        ),
-        "uv_stats": Node(
-            "GeometryNodeAttributeStatistic",
-            3,
-            {"data_type": "FLOAT_VECTOR", "domain": "CORNER"},
-            label="UV span",
-        ),
-        "uv_span": Node("ShaderNodeSeparateXYZ", 4, label="UV span"),
-        "has_uv": _compare("GREATER_THAN", 5, "has UVs", b=1.0e-6),
-        "span": _switch(6, "span, 1 without UVs", false=1.0),
-        "per_uv": math("DIVIDE", 7, "metres per UV unit"),
+        "per_uv": _switch(6, "metres per UV unit"),
         "store_uv_size": _store(UV_SIZE_ATTRIBUTE, 13, f"store '{UV_SIZE_ATTRIBUTE}'"),
     }
     links = [
@@ -512,16 +539,14 @@ def _build_sample():
         ("bounds:Max", "extent:#0"),
         ("bounds:Min", "extent:#1"),
         ("extent:Vector", "extent_xyz:Vector"),
-        ("cache:Geometry", "uv_stats:Geometry"),
-        ("uv:Attribute", "uv_stats:Attribute"),
-        ("uv_stats:Range", "uv_span:Vector"),
-        ("uv_span:X", "has_uv:#0"),
-        ("has_uv:Result", "span:Switch"),
-        ("uv_span:X", "span:True"),
-        ("extent_xyz:X", "per_uv:#0"),
-        ("span:Output", "per_uv:#1"),
+        ("cache:Geometry", "uv_size:Geometry"),
+        ("uv_size_read:Attribute", "uv_size:Value"),
+        ("uv_size:Value", "has_uv_size:#0"),
+        ("has_uv_size:Result", "per_uv:Switch"),
+        ("uv_size:Value", "per_uv:True"),
+        ("extent_xyz:X", "per_uv:False"),
         ("store_flag:Geometry", "store_uv_size:Geometry"),
-        ("per_uv:Value", "store_uv_size:Value"),
+        ("per_uv:Output", "store_uv_size:Value"),
         ("store_uv_size:Geometry", "output:Geometry"),
     ]
     return nodes, tuple(links)
