@@ -164,12 +164,14 @@ def stop_floating(obj: bpy.types.Object) -> list[str]:
 
 
 def read_values(water: bpy.types.Object) -> dict:
-    """The lake water's shader values, keyed as in presets ({} for ocean shading)."""
+    """The water's shader values, keyed as in presets (ocean shading: the keys it shares with the
+    lake's, the bump's scroll, absorption, foam and caustics)."""
     return _values.read_values(_values.water_material(water))
 
 
 def write_values(water: bpy.types.Object, values: dict) -> None:
-    """Sets the lake water's shader values from preset keys; each value is clamped into range.
+    """Sets the water's shader values from preset keys (ocean shading: those it shares with the
+    lake's); each value is clamped into range.
 
     NotEditableError for linked or overridden water; MirrorSetupError for a water needing repair.
     """

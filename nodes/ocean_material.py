@@ -5,7 +5,8 @@ whitecaps where the mesh carries them.
 The sky is the world's environment image when it has one (an Environment
 Texture node in the material, as the seeds sample their sky cube), otherwise
 the world's background colour, followed by simple-expression drivers so a
-changed world shows without running anything.
+changed world shows without running anything. The shade's clock and sun (for the
+surroundings' foam and caustics) are drivers too, as the lake's.
 """
 
 import bpy

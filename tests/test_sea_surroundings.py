@@ -119,6 +119,22 @@ def test_the_depth_follows_the_moving_sea_and_the_shore_stays(shore):
     assert np.abs(deeper - lift).max() < 1e-3
 
 
+def test_the_sea_reads_and_writes_the_values_it_shares_with_the_lake(scene):
+    """The API's values on an ocean material: the surroundings' keys round-trip, the lake's own
+    (tint, glint) are not there, and a preset's values land on the ocean shading."""
+    api = harness.addon("api")
+    sea = api.add_water(scene, preset="open_sea", resolution=17, name="Values Sea").object
+    values = api.read_values(sea)
+    assert values["absorption"] == pytest.approx((0.4, 0.08, 0.04), abs=1e-6)
+    assert values["foam_amount"] == pytest.approx(0.6) and values["caustics"] == pytest.approx(1.0)
+    assert "dull_color" not in values and "specular_power" not in values
+    api.write_values(sea, {"absorption": (1.0, 0.5, 0.25), "foam_width": 3.0, "dull_blend": 0.9})
+    shade = sea.active_material.node_tree.nodes["Water Ocean"]
+    assert tuple(shade.inputs["Absorption"].default_value)[:3] == pytest.approx((1.0, 0.5, 0.25))
+    assert shade.inputs["Foam Width"].default_value == pytest.approx(3.0)
+    assert api.read_values(sea)["foam_width"] == pytest.approx(3.0)
+
+
 def _ground(shore):
     """World x of the water plane seen in each pixel (H, W) and the mask of pixels seeing it."""
     origin, directions = harness.pixel_rays(shore["scene"], shore["camera"])

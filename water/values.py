@@ -28,12 +28,24 @@ def _socket(node, field):
     return socket if socket is not None and hasattr(socket, "default_value") else None
 
 
+def _shader_node(material):
+    """The node holding the material's shader values: the lake's `Water Surface` node, or the
+    ocean's `Water Ocean Shade` node (the keys it shares with the lake: the bump's scroll,
+    absorption, foam, caustics); None for any other material."""
+    node = water_node(material)
+    if node is None:
+        nodes = ocean_nodes(material)
+        node = nodes[1] if nodes else None
+    return node
+
+
 def read_values(material):
-    """The shader values of a lake material, keyed as in presets ({} for the ocean's).
+    """The shader values of a water material, keyed as in presets (an ocean's: those its
+    shading shares with the lake's).
 
     Inputs its group lacks, or holds with another type, are left out.
     """
-    node = water_node(material)
+    node = _shader_node(material)
     values = {}
     if node is None:
         return values
@@ -57,14 +69,11 @@ def read_values(material):
 def write_values(material, values):
     """Sets the shader values among `values` (preset keys), clamped first.
 
-    The plane's keys are ignored. On an ocean material the keys its shading shares with the
-    lake's (the bump's scroll, absorption, foam, caustics) go to its `Water Ocean Shade` node.
+    The plane's keys are ignored; an ocean material takes the keys its shading shares with the
+    lake's (`_shader_node`).
     Inputs the group lacks, or holds with another type, are skipped; returns the keys set.
     """
-    node = water_node(material)
-    if node is None:
-        nodes = ocean_nodes(material)
-        node = nodes[1] if nodes else None
+    node = _shader_node(material)
     if node is None:
         return []
     shader_keys = {field.key for field in schema.SHADER_FIELDS}
