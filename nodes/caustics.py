@@ -30,7 +30,7 @@ The tile's mean is 1, so the light is moved around, not added (exact for Caustic
 import math as _math
 
 from . import bump_uv, caustics_map, wind_frame
-from .spec import CAUSTICS_IMAGE, GroupSpec, Node, Socket, attribute, group_node, math, vmath
+from .spec import CAUSTICS_IMAGE, GroupSpec, Node, Socket, attribute, group_node, math, pass_inputs, vmath
 
 NAME = "Water Surface Caustics"
 VERSION = 1
@@ -82,6 +82,12 @@ INPUTS = (
     CAUSTICS_SCALE_INPUT,
     SUN_LIT_INPUT,
 )
+
+
+def feed(node, vector):
+    """The links into a nested caustics group node `node`: `vector` (the bump's scrolled UV) and
+    the enclosing group's inputs of the same names (the lake's and the ocean's have them all)."""
+    return ((vector, f"{node}:Vector"), *pass_inputs(node, [socket.name for socket in INPUTS[1:]]))
 
 
 def _nodes():

@@ -21,7 +21,7 @@ world's image: the lookup sits between them in the material.
 
 from . import bump_uv, caustics, water_surface
 from .bump_uv import TIME_INPUT
-from .spec import BUMP_IMAGE, GroupSpec, Node, Socket, attribute, group_node, math, vmath
+from .spec import BUMP_IMAGE, GroupSpec, Node, Socket, attribute, group_node, math, pass_inputs, vmath
 from .water_waves import NORMAL_ATTRIBUTE
 
 NORMAL_NAME = "Water Ocean Normal"
@@ -234,8 +234,7 @@ SHADE_INPUTS = (
         tooltip="How much of the Ocean modifier's foam shows as white, sunlit foam on the crests (0 = none)",
     ),
     # The surroundings (depth colour, shore foam, caustics), as on the lake: nothing without them.
-    *bump_uv.SCROLL_INPUTS,
-    TIME_INPUT,
+    *bump_uv.SCROLL_INPUTS,  # Wave Length, Wind Direction, Wind Force, Time
     Socket(
         "Absorption",
         "NodeSocketColor",
@@ -355,18 +354,8 @@ SHADE_SPEC = GroupSpec(
         ("water:Vector", "color:#0"),
         ("glint_v:Vector", "color:#1"),
         ("color:Vector", "emit:Color"),
-        ("input:Wave Length", "bump_uv:Wave Length"),
-        ("input:Wind Direction", "bump_uv:Wind Direction"),
-        ("input:Wind Force", "bump_uv:Wind Force"),
-        ("input:Time", "bump_uv:Time"),
-        ("bump_uv:Vector", "caustics:Vector"),
-        ("input:Wave Length", "caustics:Wave Length"),
-        ("input:Wind Direction", "caustics:Wind Direction"),
-        ("input:Sun Direction", "caustics:Sun Direction"),
-        ("input:Absorption", "caustics:Absorption"),
-        ("input:Caustics", "caustics:Caustics"),
-        ("input:Caustics Scale", "caustics:Caustics Scale"),
-        ("input:Sun Lit", "caustics:Sun Lit"),
+        *pass_inputs("bump_uv", water_surface.BUMP_UV_INPUTS),
+        *caustics.feed("caustics", "bump_uv:Vector"),
         ("t_seen:Vector", "lit_bed:#0"),
         ("caustics:Factor", "lit_bed:Scale"),
         ("lit_bed:Vector", "seen:#0"),
@@ -378,9 +367,7 @@ SHADE_SPEC = GroupSpec(
         ("input:Foam", "crest:Value"),
         ("crest:Result", "cover:#0"),
         ("input:Whitecaps", "cover:#1"),
-        ("bump_uv:Vector", "shore_foam:Vector"),
-        ("input:Foam Width", "shore_foam:Foam Width"),
-        ("input:Foam Amount", "shore_foam:Foam Amount"),
+        *water_surface.foam_feed("shore_foam", "bump_uv:Vector"),
         ("cover:Value", "foam_cover:#0"),
         ("shore_foam:Coverage", "foam_cover:#1"),
         ("foam_cover:Value", "mix:Fac"),

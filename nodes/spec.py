@@ -99,3 +99,8 @@ def attribute(name, column, label=""):
 def group_node(name, column, label=""):
     """A node that uses another group described here."""
     return Node("ShaderNodeGroup", column, label=label or name, group=name)
+
+
+def pass_inputs(node, names):
+    """Links from the group's own inputs to the inputs of the same names on `node` (a nested group)."""
+    return tuple((f"input:{name}", f"{node}:{name}") for name in names)

@@ -62,14 +62,17 @@ Object -> Object Info): `|scale.z|` along -Z, `|scale.xy|` in the plane. Nothing
 here needs Python at render time: Collection Info makes the depsgraph
 re-evaluate the cache whenever a surroundings object moves or deforms.
 
-`Water Surroundings Sample` (on the water, after `Water Waves`), per point i:
+`Water Surroundings Sample` (on the water, after `Water Waves` or the open sea's fade), per
+point i:
 
 * From the `Cache` object (Object Info, ORIGINAL: its own space, the water's),
   Sample Index at i of the floor (`.water_floor`) and `water_shore_distance`
   (Named Attribute fields evaluated on the cache).
 * `water_depth` = clamp((z now - floor) |scale.z|, 0, FAR): the rest depth plus the
-  lift, exact for the waves, which only move points along the water's Z; FAR where
-  nothing is below. The shore distance as sampled, the flag 1.
+  lift, exact for `Water Waves`, which only move points along the water's Z (the open
+  sea's chop also moves them sideways: the floor is the one under the rest place); FAR
+  where nothing is below. The shore distance as sampled, the flag 1, and
+  `water_uv_size`, the cache's `.water_uv_size` at point 0.
 * When the cache is missing, unmeasured (its `water_surroundings` at point 0 is not 1),
   has another point count, or is not where the water is (a duplicated water still
   pointing at the original's cache), the water reads "nothing there": FAR, FAR and
@@ -469,16 +472,10 @@ def _build_sample():
         "store_depth": _store(DEPTH_ATTRIBUTE, 10, f"store '{DEPTH_ATTRIBUTE}'"),
         "store_shore": _store(SHORE_ATTRIBUTE, 11, f"store '{SHORE_ATTRIBUTE}'"),
         "store_flag": _store(FLAG_ATTRIBUTE, 12, f"store '{FLAG_ATTRIBUTE}'"),
-        # Metres per UV unit, so the shader turns metres into UV: measured by the cache (one
-        # value, read at point 0); a cache measured before version 3 has none, and then the
-        # rest grid's width (the lake's UV runs 0..1 across it).
+        # Metres per UV unit, so the shader turns metres into UV: measured by the cache (the
+        # two groups are built together), one value, read at point 0.
         "uv_size_read": _read(CACHE_UV_SIZE_ATTRIBUTE, 2, "metres per UV unit (cache)"),
         "uv_size": _sample("FLOAT", 3, "at point 0: one value"),
-        "has_uv_size": _compare("GREATER_THAN", 4, "measured", b=0.0),
-        "bounds": Node("GeometryNodeBoundBox", 3, label="rest grid bounds"),
-        "extent": vmath("SUBTRACT", 4, "max - min"),
-        "extent_xyz": Node("ShaderNodeSeparateXYZ", 5, label="width"),
-        "per_uv": _switch(6, "metres per UV unit"),
         "store_uv_size": _store(UV_SIZE_ATTRIBUTE, 13, f"store '{UV_SIZE_ATTRIBUTE}'"),
     }
     links = [
@@ -535,18 +532,10 @@ def _build_sample():
         ("shore_valid:Output", "store_shore:Value"),
         ("store_shore:Geometry", "store_flag:Geometry"),
         ("flag_valid:Output", "store_flag:Value"),
-        ("cache:Geometry", "bounds:Geometry"),
-        ("bounds:Max", "extent:#0"),
-        ("bounds:Min", "extent:#1"),
-        ("extent:Vector", "extent_xyz:Vector"),
         ("cache:Geometry", "uv_size:Geometry"),
         ("uv_size_read:Attribute", "uv_size:Value"),
-        ("uv_size:Value", "has_uv_size:#0"),
-        ("has_uv_size:Result", "per_uv:Switch"),
-        ("uv_size:Value", "per_uv:True"),
-        ("extent_xyz:X", "per_uv:False"),
         ("store_flag:Geometry", "store_uv_size:Geometry"),
-        ("per_uv:Output", "store_uv_size:Value"),
+        ("uv_size:Value", "store_uv_size:Value"),
         ("store_uv_size:Geometry", "output:Geometry"),
     ]
     return nodes, tuple(links)

@@ -55,7 +55,18 @@ picture stays the composition of the views; 6 shows `T` and 7 the foam coverage,
 import math as _math
 
 from . import bump_uv, caustics, foam_map, wind_frame
-from .spec import BUMP_IMAGE, FOAM_IMAGE, GroupSpec, Node, Socket, attribute, group_node, math, vmath
+from .spec import (
+    BUMP_IMAGE,
+    FOAM_IMAGE,
+    GroupSpec,
+    Node,
+    Socket,
+    attribute,
+    group_node,
+    math,
+    pass_inputs,
+    vmath,
+)
 
 NAME = "Water Surface"
 VERSION = 4  # 4: caustics
@@ -203,6 +214,14 @@ FOAM_INPUTS = (
     Socket("Vector", "NodeSocketVector", tooltip="Where the foam tile is read", hide_value=True),
     *(socket for socket in INPUTS if socket.name in ("Foam Width", "Foam Amount")),
 )
+# The inputs `Water Surface Bump UV` takes from the enclosing group, by the same names.
+BUMP_UV_INPUTS = tuple(socket.name for socket in bump_uv.SCROLL_INPUTS)
+
+
+def foam_feed(node, vector):
+    """The links into a nested foam coverage node `node`: `vector` (where the tile is read) and
+    the enclosing group's Foam Width and Foam Amount."""
+    return ((vector, f"{node}:Vector"), *pass_inputs(node, [socket.name for socket in FOAM_INPUTS[1:]]))
 
 
 # Seed 001's layers after the first: (UV scale, scroll speed), both relative to layer 1.
@@ -346,7 +365,7 @@ def _weight_nodes():
     return nodes, links
 
 
-def transmittance_nodes(absorption="input:Absorption"):
+def transmittance_nodes():
     """Beer-Lambert: `T = exp(-Absorption * path)` ("transmit:Vector"), `path` = the refracted ray's
     way down to the bed. Needs a "geometry" node (Geometry); shared with the ocean shading.
 
@@ -377,7 +396,7 @@ def transmittance_nodes(absorption="input:Absorption"):
         ("cos_t2:Value", "inv_cos_t:#0"),
         ("depth:Fac", "path:#0"),
         ("inv_cos_t:Value", "path:#1"),
-        (absorption, "optical:#0"),
+        ("input:Absorption", "optical:#0"),
         ("path:Value", "optical:Scale"),
         ("optical:Vector", "optical_xyz:Vector"),
     ]
@@ -553,10 +572,7 @@ SPEC = GroupSpec(
     },
     includes=(FOAM_SPEC,),
     links=(
-        ("input:Wave Length", "bump_uv:Wave Length"),
-        ("input:Wind Direction", "bump_uv:Wind Direction"),
-        ("input:Wind Force", "bump_uv:Wind Force"),
-        ("input:Time", "bump_uv:Time"),
+        *pass_inputs("bump_uv", BUMP_UV_INPUTS),
         ("bump_uv:Vector", "bump:Vector"),
         *_LAYER_LINKS,
         ("input:Wind Direction", "frame:Wind Direction"),
@@ -609,17 +625,8 @@ SPEC = GroupSpec(
         ("input:Sun Color", "glint_color:#0"),
         ("glint:Value", "glint_color:Scale"),
         *_DEPTH_LINKS,
-        ("bump_uv:Vector", "foam:Vector"),
-        ("input:Foam Width", "foam:Foam Width"),
-        ("input:Foam Amount", "foam:Foam Amount"),
-        ("bump_uv:Vector", "caustics:Vector"),
-        ("input:Wave Length", "caustics:Wave Length"),
-        ("input:Wind Direction", "caustics:Wind Direction"),
-        ("input:Sun Direction", "caustics:Sun Direction"),
-        ("input:Absorption", "caustics:Absorption"),
-        ("input:Caustics", "caustics:Caustics"),
-        ("input:Caustics Scale", "caustics:Caustics Scale"),
-        ("input:Sun Lit", "caustics:Sun Lit"),
+        *foam_feed("foam", "bump_uv:Vector"),
+        *caustics.feed("caustics", "bump_uv:Vector"),
         *_WEIGHT_LINKS,
         ("normal_h:Normal", "glossy:Normal"),
         ("normal_h:Normal", "refraction:Normal"),

@@ -311,6 +311,22 @@ def test_bad_sea_values_are_clamped_and_said(scene):
     assert "lowered" in open_sea.sea_memory_note(8)
 
 
+def test_the_sea_reads_and_writes_the_values_it_shares_with_the_lake(scene):
+    """The API's values on an ocean material: the surroundings' keys round-trip, the lake's own
+    (tint, glint) are not there, and a preset's values land on the ocean shading."""
+    api = _api()
+    sea = api.add_water(scene, preset="open_sea", resolution=17, name="Values Sea").object
+    values = api.read_values(sea)
+    assert values["absorption"] == pytest.approx((0.4, 0.08, 0.04), abs=1e-6)
+    assert values["foam_amount"] == pytest.approx(0.6) and values["caustics"] == pytest.approx(1.0)
+    assert "dull_color" not in values and "specular_power" not in values
+    api.write_values(sea, {"absorption": (1.0, 0.5, 0.25), "foam_width": 3.0, "dull_blend": 0.9})
+    shade = sea.active_material.node_tree.nodes["Water Ocean"]
+    assert tuple(shade.inputs["Absorption"].default_value)[:3] == pytest.approx((1.0, 0.5, 0.25))
+    assert shade.inputs["Foam Width"].default_value == pytest.approx(3.0)
+    assert api.read_values(sea)["foam_width"] == pytest.approx(3.0)
+
+
 @pytest.mark.render
 def test_a_saved_sea_animates_and_renders_the_same_without_the_add_on(
     scene, render, tmp_path, addon_disabled_afterwards

@@ -2,7 +2,7 @@
 
 The sea (`open_sea`, 5 m/s wind from (0.8, 0.6), choppy) meets a sandy bed sloping from 2 m above
 the water at x = -20 to 8 m below it at x = +20 (waterline at x = -12), lit by a sun that is not
-overhead (50 degrees up, from the south-west), seen from 40 m up: the same rules as on the lake.
+overhead (50 degrees up, from the north-west), seen from 40 m up: the same rules as on the lake.
 """
 
 import math
@@ -117,22 +117,6 @@ def test_the_depth_follows_the_moving_sea_and_the_shore_stays(shore):
     print(f"the surface moved by {np.abs(lift).mean():.3f} m on average between the frames")
     assert np.abs(lift).mean() > 0.02
     assert np.abs(deeper - lift).max() < 1e-3
-
-
-def test_the_sea_reads_and_writes_the_values_it_shares_with_the_lake(scene):
-    """The API's values on an ocean material: the surroundings' keys round-trip, the lake's own
-    (tint, glint) are not there, and a preset's values land on the ocean shading."""
-    api = harness.addon("api")
-    sea = api.add_water(scene, preset="open_sea", resolution=17, name="Values Sea").object
-    values = api.read_values(sea)
-    assert values["absorption"] == pytest.approx((0.4, 0.08, 0.04), abs=1e-6)
-    assert values["foam_amount"] == pytest.approx(0.6) and values["caustics"] == pytest.approx(1.0)
-    assert "dull_color" not in values and "specular_power" not in values
-    api.write_values(sea, {"absorption": (1.0, 0.5, 0.25), "foam_width": 3.0, "dull_blend": 0.9})
-    shade = sea.active_material.node_tree.nodes["Water Ocean"]
-    assert tuple(shade.inputs["Absorption"].default_value)[:3] == pytest.approx((1.0, 0.5, 0.25))
-    assert shade.inputs["Foam Width"].default_value == pytest.approx(3.0)
-    assert api.read_values(sea)["foam_width"] == pytest.approx(3.0)
 
 
 def _ground(shore):
@@ -264,8 +248,9 @@ def test_caustics_move_light_on_the_shallow_bed_without_adding_any(shore, render
 @pytest.mark.newest_only
 def test_cycles_shows_the_same_shallows(shore, renders):
     """The same frame in Cycles (16 samples, not denoised): over bands of depth, the mean colour
-    per channel as EEVEE's within 0.03 (measured 0.001-0.020 on 5.2.3); the per-pixel difference,
-    the caustics' lines and the samples' noise in it, is printed."""
+    per channel as EEVEE's within 0.03 (measured, the channel that differs most: 0.011, 0.012,
+    0.020 on 5.2.3); the per-pixel difference, the caustics' lines and the samples' noise in it,
+    is printed."""
     scene = shore["scene"]
     engine = scene.render.engine
     scene.render.engine = "CYCLES"

@@ -21,7 +21,18 @@ DOCS = harness.ROOT / "docs"
 SIZE = (640, 360)
 
 
-def boat(bpy, scene):
+def principled(bpy, name, color, roughness=0.5):
+    """A Principled BSDF material of `color` (RGB)."""
+    material = bpy.data.materials.new(name)
+    if bpy.app.version < (5, 0, 0):
+        material.use_nodes = True
+    bsdf = material.node_tree.nodes["Principled BSDF"]
+    bsdf.inputs["Base Color"].default_value = (*color, 1.0)
+    bsdf.inputs["Roughness"].default_value = roughness
+    return material
+
+
+def boat(bpy):
     """A 6 m hull with a cabin, one object, origin at the waterline."""
     bpy.ops.mesh.primitive_cube_add(size=1.0, location=(0.0, 0.0, 0.3))
     hull = bpy.context.active_object
@@ -34,50 +45,47 @@ def boat(bpy, scene):
     bpy.context.view_layer.objects.active = hull
     bpy.ops.object.transform_apply(scale=True)
     bpy.ops.object.join()
-    material = bpy.data.materials.new("Boat")
-    if bpy.app.version < (5, 0, 0):
-        material.use_nodes = True
-    material.node_tree.nodes["Principled BSDF"].inputs["Base Color"].default_value = (0.6, 0.12, 0.08, 1)
-    hull.data.materials.append(material)
+    hull.data.materials.append(principled(bpy, "Boat", (0.6, 0.12, 0.08)))
     hull.name = "Boat"
     hull.location = (3.0, 16.0, 0.0)
     hull.rotation_euler = (0.0, 0.0, math.radians(35.0))
     return hull
 
 
-def island(bpy, scene):
+def island(bpy):
     """A sandy cone 600 m across, its top 2 m out of the water, sloping 1 in 7 to 40 m deep."""
     bpy.ops.mesh.primitive_cone_add(vertices=96, radius1=300.0, radius2=0.0, depth=42.0)
     cone = bpy.context.active_object
     cone.name = "Island"
     cone.location = (-10.0, 50.0, -19.0)
-    material = bpy.data.materials.new("Sand")
-    if bpy.app.version < (5, 0, 0):
-        material.use_nodes = True
-    bsdf = material.node_tree.nodes["Principled BSDF"]
-    bsdf.inputs["Base Color"].default_value = (0.8, 0.62, 0.38, 1)
-    bsdf.inputs["Roughness"].default_value = 0.9
-    cone.data.materials.append(material)
+    cone.data.materials.append(principled(bpy, "Sand", (0.8, 0.62, 0.38), roughness=0.9))
     return cone
 
 
-def shore(bpy):
-    """The open sea at 6 m/s round a sandy island, from 14 m up."""
+def sunny_sea(bpy, sun_rotation, wind_speed, before_sea=None):
+    """A scene with the generated sky, a sun (Euler angles in degrees) and the `open_sea` preset
+    at `wind_speed`; `before_sea()` adds what the sea must find below it. Returns (scene, water)."""
     scene = harness.clean_scene(width=SIZE[0], height=SIZE[1], samples=8)
     sky_world(bpy, scene)
     sun = bpy.data.objects.new("Sun", bpy.data.lights.new("Sun", "SUN"))
     sun.data.energy = 3.0
-    sun.rotation_euler = (math.radians(45.0), 0.0, math.radians(150.0))
+    sun.rotation_euler = [math.radians(angle) for angle in sun_rotation]
     scene.collection.objects.link(sun)
-    island(bpy, scene)  # before the sea: the sea gathers what reaches below it
-    api = harness.addon("api")
-    added = api.add_water(scene, preset="open_sea", sea_wind_speed=6.0, wind_direction=(0.8, 0.6))
+    if before_sea is not None:
+        before_sea()  # the sea gathers the objects that reach below it when it is added
+    added = harness.addon("api").add_water(
+        scene, preset="open_sea", sea_wind_speed=wind_speed, wind_direction=(0.8, 0.6)
+    )
     print(added.summary("open_sea"), flush=True)
-    harness.add_camera(scene, (6.0, -2.0, 14.0), (-4.0, 34.0, 0.0), lens=30)
+    return scene, added.object
+
+
+def render(bpy, scene, name, what):
+    """Renders frame 60 to out/<name>.png and copies it to docs/."""
     scene.frame_set(60)
-    print(f"[shore] open sea round an island, {SIZE[0]} x {SIZE[1]} ...", flush=True)
-    harness.render(scene, OUT / "open_sea_shore.png")
-    shutil.copyfile(OUT / "open_sea_shore.png", DOCS / "open_sea_shore.png")
+    print(f"[{name}] {what}, {SIZE[0]} x {SIZE[1]}, Blender {bpy.app.version_string} ...", flush=True)
+    harness.render(scene, OUT / f"{name}.png")
+    shutil.copyfile(OUT / f"{name}.png", DOCS / f"{name}.png")
 
 
 def main():
@@ -86,27 +94,18 @@ def main():
     harness.install(harness.build_zip(tempfile.mkdtemp(prefix="water_surface_dist_")))
     OUT.mkdir(parents=True, exist_ok=True)
     DOCS.mkdir(parents=True, exist_ok=True)
-    shore(bpy)
+    # The open sea at 6 m/s round a sandy island, from 14 m up.
+    scene, _sea = sunny_sea(bpy, (45.0, 0.0, 150.0), 6.0, before_sea=lambda: island(bpy))
+    harness.add_camera(scene, (6.0, -2.0, 14.0), (-4.0, 34.0, 0.0), lens=30)
+    render(bpy, scene, "open_sea_shore", "open sea round an island")
     print(f"wrote {OUT / 'open_sea_shore.png'} in {time.monotonic() - start:.0f} s", flush=True)
     if sys.argv[1:] == ["shore"]:
         return 0
-    scene = harness.clean_scene(width=SIZE[0], height=SIZE[1], samples=8)
-    sky_world(bpy, scene)
-    sun = bpy.data.objects.new("Sun", bpy.data.lights.new("Sun", "SUN"))
-    sun.data.energy = 3.0
-    sun.rotation_euler = (math.radians(70.0), 0.0, math.radians(180.0))
-    scene.collection.objects.link(sun)
-    api = harness.addon("api")
-    added = api.add_water(scene, preset="open_sea", sea_wind_speed=15.0, wind_direction=(0.8, 0.6))
-    print(added.summary("open_sea"), flush=True)
-    api.float_on_water(boat(bpy, scene), added.object, tilt_damping=0.3)
+    # The open sea at 15 m/s with a boat floating on it, from 3 m up.
+    scene, sea = sunny_sea(bpy, (70.0, 0.0, 180.0), 15.0)
+    harness.addon("api").float_on_water(boat(bpy), sea, tilt_damping=0.3)
     harness.add_camera(scene, (0.0, -4.0, 3.0), (6.0, 40.0, 0.0), lens=28)
-    scene.frame_set(60)
-    print(f"[1/1] open sea, {SIZE[0]} x {SIZE[1]}, Blender {bpy.app.version_string} ...", flush=True)
-    OUT.mkdir(parents=True, exist_ok=True)
-    harness.render(scene, OUT / "open_sea.png")
-    DOCS.mkdir(parents=True, exist_ok=True)
-    shutil.copyfile(OUT / "open_sea.png", DOCS / "open_sea.png")
+    render(bpy, scene, "open_sea", "open sea")
     print(f"wrote {OUT / 'open_sea.png'} in {time.monotonic() - start:.0f} s", flush=True)
     return 0
 

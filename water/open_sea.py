@@ -198,7 +198,7 @@ def crest_height(obj):
     if found is None:
         return 0.0
     ocean = found[0]
-    return 4.0 * ocean.wave_scale * HEIGHT_STD_AT_SCALE_1.get(ocean.spectrum, 0.3)
+    return 4.0 * ocean.wave_scale * HEIGHT_STD_AT_SCALE_1[ocean.spectrum]
 
 
 def whitecaps_input(material):

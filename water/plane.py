@@ -119,7 +119,8 @@ def add_water(
     With `see_surroundings` (the default) the water gets its surroundings
     (`surroundings.py`): its own collection holding the mesh objects that reach
     below it (empty when there are none), measured by its cache; when something
-    is below, the grid gets the points the waterline needs. Without it nothing
+    is below a lake, its grid gets the points the waterline needs (the open sea's
+    graded grid stays as it is). Without it nothing
     is added and the lake stays one quad (the panel's Surroundings button adds
     them later).
     Atomic: on any failure everything it made is removed and `AddWaterError`

@@ -1,5 +1,6 @@
-"""The water's values live on its material's `Water Surface` group node: one
-source of truth that the panel shows, presets fill and the `.blend` keeps."""
+"""The water's values live on its material's group node (the lake's `Water Surface`, the
+ocean's `Water Ocean Shade`): one source of truth that the panel shows, presets fill and the
+`.blend` keeps."""
 
 from ..nodes.material import water_node
 from ..nodes.ocean_material import ocean_nodes
