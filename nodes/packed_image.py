@@ -9,7 +9,7 @@ import os
 
 import bpy
 
-from .ownership import is_local, mark, owned, role_of
+from .ownership import is_original, mark, owned, role_of
 
 SIZE = 512
 
@@ -22,7 +22,7 @@ def find(name, version_key):
 
 def is_owned_image(image, name, version_key):
     """Whether `image` is the add-on's image `name` (by its mark, not its name)."""
-    return image is not None and is_local(image) and role_of(image, version_key) == name
+    return image is not None and role_of(image, version_key) == name and is_original(image, version_key)
 
 
 def has_pixels(image):
@@ -50,4 +50,5 @@ def ensure(name, version_key, version, rgba):
         image.user_remap(fresh)
         bpy.data.images.remove(image)
         fresh.name = old_name
+        mark(fresh, name, version, version_key)  # under the name it took over
     return fresh

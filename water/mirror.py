@@ -19,7 +19,7 @@ import numpy as np
 
 from ..engine import eevee_engine_id, enable_ray_tracing
 from ..nodes.material import glint_sun, water_node
-from ..nodes.ownership import is_local, mark, owned
+from ..nodes.ownership import is_original, mark, owned
 from . import sun_link
 from .editable import check_editable
 from .repair import needs_repair
@@ -49,7 +49,7 @@ def _is_mirror_probe(obj):
         and obj.type == "LIGHT_PROBE"
         and obj.data is not None
         and obj.data.type == "PLANE"
-        and is_local(obj)
+        and is_original(obj)
     )
 
 
@@ -118,7 +118,7 @@ def _orphan_probe_data(water):
         (
             d
             for d in bpy.data.lightprobes
-            if d.users == 0 and d.get(PROBE_TAG) == water.name and d.type == "PLANE" and is_local(d)
+            if d.users == 0 and d.get(PROBE_TAG) == water.name and d.type == "PLANE" and is_original(d)
         ),
         None,
     )

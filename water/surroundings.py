@@ -46,7 +46,7 @@ from mathutils import Matrix, Vector
 from ..nodes import SPECS
 from ..nodes import surroundings as spec
 from ..nodes.builder import ensure_group
-from ..nodes.ownership import is_local, mark, role_of
+from ..nodes.ownership import is_local, is_original, mark, role_of
 from ..presets import schema
 from . import open_sea, plane
 from .editable import check_editable
@@ -109,7 +109,7 @@ def surroundings_cache(water):
     cache = _input(surroundings_modifier(water), CACHE_INPUT)
     if is_cache(cache) and cache.parent == water:
         return cache
-    return next((o for o in bpy.data.objects if is_cache(o) and is_local(o) and o.parent == water), None)
+    return next((o for o in bpy.data.objects if is_cache(o) and is_original(o) and o.parent == water), None)
 
 
 def surroundings_collection(water):
@@ -221,13 +221,13 @@ def _own_collection(water):
     """The add-on's collection made for `water`: the one its modifier sees, else one marked with
     its name; None when there is none."""
     current = surroundings_collection(water)
-    if current is not None and is_local(current) and role_of(current) == COLLECTION_ROLE:
+    if current is not None and role_of(current) == COLLECTION_ROLE and is_original(current):
         return current
     return next(
         (
             c
             for c in bpy.data.collections
-            if is_local(c) and role_of(c) == COLLECTION_ROLE and c.get(WATER_KEY) == water.name
+            if role_of(c) == COLLECTION_ROLE and is_original(c) and c.get(WATER_KEY) == water.name
         ),
         None,
     )
@@ -348,7 +348,9 @@ def _remove_lost_caches():
         for m in o.modifiers
         if m.type == "NODES" and m.node_group is not None and role_of(m.node_group) == spec.SAMPLE_NAME
     }
-    lost = [o for o in bpy.data.objects if is_cache(o) and is_local(o) and o.parent is None and o not in read]
+    lost = [
+        o for o in bpy.data.objects if is_cache(o) and is_original(o) and o.parent is None and o not in read
+    ]
     changes = [f"removed '{o.name}' (its water was deleted)" for o in lost]
     for obj in lost:
         bpy.data.objects.remove(obj)
