@@ -12,29 +12,21 @@ four sines (`Water Waves`) or the open sea's Ocean modifier.
 import bpy
 from mathutils import Vector
 
+from . import surroundings
 from .editable import check_editable
+from .float_constraints import FLOAT, TILT, float_constraints, floating_on, forget, remember
+from .float_constraints import constraint as constraint_for
 from .values import is_water
 
-FLOAT = "Water Float"
-TILT = "Water Float Tilt"
+__all__ = ("FloatError", "float_on_water", "floating_on", "is_floating", "stop_floating", "water_below")
 
 
 class FloatError(RuntimeError):
     """An object cannot float as asked (a one-line message)."""
 
 
-def _water_constraints(obj):
-    return [c for c in obj.constraints if c.type == "SHRINKWRAP" and c.name in (FLOAT, TILT)]
-
-
 def is_floating(obj):
-    return bool(_water_constraints(obj))
-
-
-def floating_on(obj):
-    """The water `obj` floats on, or None."""
-    found = _water_constraints(obj)
-    return found[0].target if found else None
+    return bool(float_constraints(obj))
 
 
 def water_below(obj, scene, depsgraph=None):
@@ -58,11 +50,13 @@ def water_below(obj, scene, depsgraph=None):
     return best[1] if best else None
 
 
-def _shrinkwrap(obj, name, water):
-    constraint = obj.constraints.get(name)
-    if constraint is None or constraint.type != "SHRINKWRAP":
+def _shrinkwrap(obj, role, name, water):
+    """The add-on's constraint `role` on `obj` (reused, or made and recorded) aimed at `water`."""
+    constraint = constraint_for(obj, role)
+    if constraint is None:
         constraint = obj.constraints.new("SHRINKWRAP")
-        constraint.name = name
+        constraint.name = name  # Blender adds ".001" when the user has one of that name
+        remember(obj, role, constraint)
     constraint.target = water
     constraint.shrinkwrap_type = "PROJECT"
     constraint.project_axis = "NEG_Z"
@@ -83,22 +77,29 @@ def float_on_water(obj, water, tilt_damping=0.0):
     if water == obj:
         raise FloatError(f"'{obj.name}' is the water itself")
     damping = min(max(float(tilt_damping), 0.0), 1.0)
-    tilt = _shrinkwrap(obj, TILT, water)
+    try:  # what floats on a water is never in its surroundings: the two would make a cycle
+        changes = surroundings.leave_out(water, obj)
+    except surroundings.SurroundingsError as error:
+        raise FloatError(str(error)) from error
+    tilt = _shrinkwrap(obj, "tilt", TILT, water)
     tilt.use_track_normal = True
     tilt.track_axis = "TRACK_Z"
     tilt.influence = 1.0 - damping
-    _shrinkwrap(obj, FLOAT, water).use_track_normal = False
+    last = _shrinkwrap(obj, "float", FLOAT, water)
+    last.use_track_normal = False
     # The tilt before the last projection, whatever order they were in.
     order = [c.name for c in obj.constraints]
-    if order.index(TILT) > order.index(FLOAT):
-        obj.constraints.move(order.index(TILT), order.index(FLOAT))
-    return [f"'{obj.name}' floats on '{water.name}' (tilt damping {damping:g})"]
+    if order.index(tilt.name) > order.index(last.name):
+        obj.constraints.move(order.index(tilt.name), order.index(last.name))
+    return [f"'{obj.name}' floats on '{water.name}' (tilt damping {damping:g})"] + changes
 
 
 def stop_floating(obj):
-    """Removes the floating constraints; the object goes back to where it was before."""
+    """Removes the floating constraints the add-on made (by its record on the object, never a
+    user's constraint of the same name); the object goes back to where it was before."""
     check_editable(obj)
-    found = _water_constraints(obj)
+    found = float_constraints(obj)
     for constraint in found:
         obj.constraints.remove(constraint)
+    forget(obj)
     return [f"'{obj.name}' no longer floats"] if found else []

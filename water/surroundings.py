@@ -50,6 +50,7 @@ from ..nodes.ownership import is_local, is_original, mark, role_of
 from ..presets import schema
 from . import open_sea, plane
 from .editable import check_editable
+from .float_constraints import floating_on
 from .mirror import rest_bounds
 from .values import is_water
 from .waves import amplitude_sum, input_ids, input_property, set_wave_input, wave_modifier
@@ -171,11 +172,16 @@ def _sees(obj, water):
     return any(o in mine for o in _objects_seen(surroundings_collection(obj)))
 
 
+def _makes_cycle(obj, water, cache):
+    """Whether `water` seeing `obj` would make a dependency cycle: `obj` is the water, its cache, a
+    water seeing them, or an object floating on the water (its constraints read the water)."""
+    return obj == water or obj == cache or _sees(obj, water) or floating_on(obj) == water
+
+
 def _cycle_makers(water, collection):
-    """The objects of `collection` that would make a dependency cycle for `water`: the water, its
-    cache, and the waters seeing them."""
+    """The objects of `collection` that would make a dependency cycle for `water`."""
     cache = surroundings_cache(water)
-    return [o for o in _objects_seen(collection) if o == water or o == cache or _sees(o, water)]
+    return [o for o in _objects_seen(collection) if _makes_cycle(o, water, cache)]
 
 
 def _update_matrices(scene):
@@ -192,6 +198,7 @@ def default_surroundings(water, scene):
 
     Worked out in the water's object space, so a tilted or scaled water gets the same answer.
     Other waters are left out (two waters seeing each other would be a cycle), and so are the
+    objects floating on this water (they read its surface: a cycle too) and the
     surroundings caches: a cache shares its water's mesh, so it may read as a water (`is_water`)
     when its material slots are not its own; it is left out by its mark in any case.
     """
@@ -202,7 +209,7 @@ def default_surroundings(water, scene):
     top = high[2] + (amplitude_sum(waves) if waves is not None else open_sea.crest_height(water))
     found = []
     for obj in scene.objects:
-        if obj == water or obj.type != "MESH" or is_cache(obj):
+        if obj == water or obj.type != "MESH" or is_cache(obj) or floating_on(obj) == water:
             continue
         if is_water(obj) or surroundings_modifier(obj) is not None:
             continue
@@ -242,12 +249,17 @@ def _fill(collection, water, scene):
     changes = []
     wanted = default_surroundings(water, scene) if scene is not None else []
     cache = surroundings_cache(water)
+    floaters = [o for o in collection.objects if floating_on(o) == water]
     cycles = [
-        o for o in collection.objects if o not in wanted and (o == water or o == cache or _sees(o, water))
+        o
+        for o in collection.objects
+        if o not in wanted and o not in floaters and _makes_cycle(o, water, cache)
     ]
-    stale = [o for o in collection.objects if o not in wanted and o not in cycles]
-    for obj in cycles + stale:
+    stale = [o for o in collection.objects if o not in wanted and o not in cycles + floaters]
+    for obj in floaters + cycles + stale:
         collection.objects.unlink(obj)
+    if floaters:
+        changes.append(f"left {_names(floaters)} out of '{collection.name}' (floating on the water: a cycle)")
     if cycles:
         changes.append(f"took {_names(cycles)} out of '{collection.name}' (it would see itself: a cycle)")
     if stale:
@@ -259,6 +271,27 @@ def _fill(collection, water, scene):
     if added:
         changes.append(f"'{collection.name}' holds {_names(added)}")
     return changes
+
+
+def leave_out(water, obj):
+    """Takes `obj`, which is to float on `water`, out of the water's surroundings; returns the
+    changes. The add-on's own collection lets it go (with a note); a user's collection holding it
+    is never edited: SurroundingsError says to take it out first."""
+    collection = surroundings_collection(water)
+    if collection is None or obj not in _objects_seen(collection):
+        return []
+    if collection == _own_collection(water) and obj.name in collection.objects:
+        collection.objects.unlink(obj)
+        cache = surroundings_cache(water)
+        if cache is not None:
+            _refresh(water, cache)
+        return [
+            f"left '{obj.name}' out of '{collection.name}' (what floats on a water is not its surroundings)"
+        ]
+    raise SurroundingsError(
+        f"'{obj.name}' is in '{collection.name}', which '{water.name}' sees as its surroundings: "
+        "take it out of that collection first (floating on the water it shapes would be a dependency cycle)"
+    )
 
 
 def _place(water, modifier):
