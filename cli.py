@@ -7,12 +7,14 @@ The work itself is done by plain functions in `water/files.py`.
 
 import argparse
 import math
+import re
 import sys
 
 import bpy
 
 from . import presets
 from .presets import schema
+from .water import files
 
 COMMAND = "water_surface"
 _handle = None
@@ -43,14 +45,26 @@ class _Parser(argparse.ArgumentParser):
         raise _ParserExitError(status)
 
 
+MAX_NUMBER_TEXT = 64  # characters: repr() writes any float in at most 24; longer text is no number
+
+
 def _whole(what, low, high):
-    """argparse type: an integer within low..high, refused (not clamped) outside it."""
+    """argparse type: an integer within low..high, refused (not clamped) outside it.
+
+    Read without int()'s own limit on digits (its message would name no option): plain
+    ASCII digits with an optional sign, as many as `high` and `low` have at most.
+    """
+    longest = max(len(str(abs(low))), len(str(abs(high))))
 
     def parse(text):
-        try:
-            number = int(text)
-        except ValueError:
-            raise argparse.ArgumentTypeError(f"invalid int value: '{text}'") from None
+        match = re.fullmatch(r"\s*([+-]?)0*([0-9]+)\s*", text, re.ASCII)
+        if match is None:
+            raise argparse.ArgumentTypeError(f"invalid int value: {files.shown(text)}")
+        sign, digits = match.groups()
+        if len(digits) > longest:
+            bound = f"at least {low}" if sign == "-" else f"at most {high}"
+            raise argparse.ArgumentTypeError(f"{what} must be {bound}, not {files.shown(text.strip())}")
+        number = int(sign + digits)
         if number < low:
             raise argparse.ArgumentTypeError(f"{what} must be at least {low}, not {number}")
         if number > high:
@@ -62,13 +76,26 @@ def _whole(what, low, high):
 
 def _finite(text):
     """argparse type: a float that is a number (values outside a field's range are clamped later)."""
+    if len(text) > MAX_NUMBER_TEXT:
+        raise argparse.ArgumentTypeError(
+            f"not a number of at most {MAX_NUMBER_TEXT} characters: {files.shown(text)}"
+        )
     try:
         number = float(text)
     except ValueError:
-        raise argparse.ArgumentTypeError(f"invalid float value: '{text}'") from None
+        raise argparse.ArgumentTypeError(f"invalid float value: {files.shown(text)}") from None
     if not math.isfinite(number):
-        raise argparse.ArgumentTypeError(f"must be a finite number, not '{text}'")
+        word = "a finite number" if text.strip().lstrip("+-").isalpha() else "within a float's range"
+        raise argparse.ArgumentTypeError(f"must be {word}, not {files.shown(text)}")
     return number
+
+
+def _frames(text):
+    """argparse type: N or FIRST-LAST as a list of frame numbers (`files.parse_frames`)."""
+    try:
+        return files.parse_frames(text)
+    except files.FileJobError as error:
+        raise argparse.ArgumentTypeError(str(error)) from None
 
 
 def _one_line(error, named=False):
@@ -80,8 +107,6 @@ def _one_line(error, named=False):
 
 
 def _parser():
-    from .water import files
-
     parser = _Parser(prog=f"blender -c {COMMAND}", description="Water Surface from the command line")
     commands = parser.add_subparsers(dest="command", required=True, parser_class=_Parser)
 
@@ -121,7 +146,9 @@ def _parser():
         type=_whole("frame", files.MIN_FRAME, files.MAX_FRAME),
         help="one frame to render (default: the file's current frame)",
     )
-    which.add_argument("--frames", help="frames to render, N or FIRST-LAST (e.g. 1-48), one line a frame")
+    which.add_argument(
+        "--frames", type=_frames, help="frames to render, N or FIRST-LAST (e.g. 1-48), one line a frame"
+    )
     render.add_argument(
         "--samples", type=_whole("samples", 1, MAX_SAMPLES), help="render samples (default: the file's)"
     )
@@ -137,8 +164,6 @@ def main(argv):
     (2: the command line is wrong, 1: the job cannot run); nothing raises out of here
     but KeyboardInterrupt, so Blender never prints a traceback for this command.
     """
-    from .water import files
-
     try:
         args = _parser().parse_args(list(argv))
         if args.command == "presets":
@@ -158,14 +183,13 @@ def main(argv):
                 **values,
             )
         else:
-            frames = files.parse_frames(args.frames) if args.frames is not None else None
             done = files.render_file(
                 args.source,
                 args.target,
                 scene=args.scene,
                 frame=args.frame,
                 samples=args.samples,
-                frames=frames,
+                frames=args.frames,
                 progress=lambda line: print(line, flush=True),
                 keep_session=False,
             )

@@ -111,6 +111,9 @@ class OBJECT_OT_water_surface_preset_remove(bpy.types.Operator):
         try:
             name = presets.get(self.preset).name
             presets.remove_user_preset(self.preset)
+        except presets.PresetGoneError as error:  # the list is reloaded: the stale entry is gone
+            self.report({"ERROR"}, f"Preset '{name}': {error}; it is no longer listed")
+            return {"CANCELLED"}
         except (presets.PresetError, OSError) as error:
             self.report({"ERROR"}, str(error))
             return {"CANCELLED"}

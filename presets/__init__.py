@@ -11,7 +11,7 @@ import bpy
 
 from . import schema, store
 from .schema import PresetError
-from .store import PresetExistsError
+from .store import PresetExistsError, PresetGoneError
 
 ADDON_PACKAGE = __package__.rpartition(".")[0]
 
@@ -85,17 +85,24 @@ def save_user_preset(name, values, overwrite=False):
 
 
 def remove_user_preset(preset_id):
-    """Deletes a user preset's file; built-in presets cannot be removed."""
+    """Deletes a user preset's file and reloads; built-in presets cannot be removed.
+
+    The list is reloaded also when deleting fails, so a preset whose file is gone
+    already (store.PresetGoneError) leaves the list with the error.
+    """
     preset = get(preset_id)
     if not preset.user:
         raise PresetError(f"'{preset.name}' is built in and cannot be removed")
-    preset.path.unlink()
-    reload()
+    try:
+        store.remove_preset(preset.path)
+    finally:
+        reload()
 
 
 __all__ = (
     "PresetError",
     "PresetExistsError",
+    "PresetGoneError",
     "schema",
     "store",
     "user_dir",

@@ -6,7 +6,9 @@ shader's inputs cannot drift apart.
 """
 
 import math
+from collections.abc import Mapping
 from dataclasses import dataclass
+from numbers import Real
 
 from ..nodes import ocean, water_surface
 
@@ -177,17 +179,72 @@ def defaults():
     return {field.key: field.default for field in FIELDS}
 
 
+def _is_number(value):
+    """The one rule for a number, in a preset's JSON and from a script alike: an int or a float
+    (numpy's too), never a bool (`true` is no wave height) nor a string ("2" is text)."""
+    return isinstance(value, Real) and not isinstance(value, bool)
+
+
 def _number(value, key):
-    # bool is an int in Python, but `true` is no wave height.
-    if isinstance(value, bool) or not isinstance(value, (int, float)):
+    if not _is_number(value):
         raise PresetError(f"'{key}' must be a number, not {type(value).__name__}")
-    return float(value)
+    try:
+        return float(value)
+    except OverflowError as error:  # an integer too large for a float
+        raise PresetError(f"'{key}' holds a number out of range ({error})") from error
+
+
+def _numbers(value, field):
+    """The floats of a vec2 or colour value: a list, a tuple or another sequence (a mathutils
+    Vector or Color, a property array) of 2 or 3 numbers; never a string, a dict or a set."""
+    width = 2 if field.kind == "vec2" else 3
+    sequence = not isinstance(value, (str, bytes, bytearray, Mapping)) and hasattr(value, "__getitem__")
+    try:
+        length = len(value) if sequence else None
+    except TypeError:  # a sequence-like object without a length (numpy's 0-d array)
+        length = None
+    if length != width:
+        what = type(value).__name__ if length is None else f"a {type(value).__name__} of {length}"
+        raise PresetError(f"'{field.key}' must be a list of {width} numbers, not {what}")
+    return tuple(_number(v, field.key) for v in value)
 
 
 def _clamp(value, field):
     if not math.isfinite(value):
         raise PresetError(f"'{field.key}' must be finite, not {value}")
     return min(max(value, field.min), field.max)
+
+
+def _check_type(field, value):
+    """`value` unchanged when it has the field's type; PresetError naming the key and the type."""
+    if field.kind in ("float", "int"):
+        _number(value, field.key)
+    elif field.kind == "bool":
+        if not isinstance(value, bool):
+            raise PresetError(f"'{field.key}' must be true or false, not {value!r}")
+    elif field.kind == "choice":
+        if not isinstance(value, str) or value not in field.choices:
+            raise PresetError(f"'{field.key}' must be one of {', '.join(field.choices)}, not {value!r}")
+    else:
+        _numbers(value, field)
+    return value
+
+
+def check_types(values):
+    """Raises PresetError (a ValueError, one line naming the key and the type it needs) unless
+    each known key of `values` holds a value of its field's type; other keys are not looked at.
+
+    The type rule of presets read from JSON (`check_value`), for values from scripts: a number
+    is an int or a float, never a bool nor a string; `wind_direction` and the colours are 2 or 3
+    such numbers; a bool is True or False; a choice one of its strings. Ranges are not checked:
+    callers clamp (`clamp_values`).
+    """
+    if not isinstance(values, Mapping):
+        raise PresetError(f"values must be a dict of preset keys, not {type(values).__name__}")
+    for key, value in values.items():
+        field = BY_KEY.get(key)
+        if field is not None:
+            _check_type(field, value)
 
 
 def check_value(field, value):
@@ -199,18 +256,9 @@ def check_value(field, value):
         if not math.isfinite(number) or number != int(number):
             raise PresetError(f"'{field.key}' must be a whole number, not {value}")
         return int(_clamp(number, field))
-    if field.kind == "bool":
-        if not isinstance(value, bool):
-            raise PresetError(f"'{field.key}' must be true or false, not {value!r}")
-        return value
-    if field.kind == "choice":
-        if value not in field.choices:
-            raise PresetError(f"'{field.key}' must be one of {', '.join(field.choices)}, not {value!r}")
-        return value
-    width = 2 if field.kind == "vec2" else 3
-    if not isinstance(value, (list, tuple)) or len(value) != width:
-        raise PresetError(f"'{field.key}' must be a list of {width} numbers")
-    numbers = tuple(_clamp(_number(v, field.key), field) for v in value)
+    if field.kind in ("bool", "choice"):
+        return _check_type(field, value)
+    numbers = tuple(_clamp(v, field) for v in _numbers(value, field))
     if field.kind == "vec2" and numbers[0] == 0.0 and numbers[1] == 0.0:
         return tuple(field.default)  # no direction at all: the reference's +Y
     return numbers

@@ -8,6 +8,7 @@ nested, a FIFO, a device) can hang or stop the reader. Saving never writes
 through a symlink nor replaces a preset unasked.
 """
 
+import codecs
 import json
 import os
 import re
@@ -76,9 +77,10 @@ def _read_text(path):
     finally:
         os.close(fd)
     try:
-        return data.decode("utf-8")
+        return data.decode("utf-8-sig")  # a byte-order mark (Windows editors) is not part of the JSON
     except UnicodeDecodeError as error:
-        raise PresetError(f"is not UTF-8 text ({error.reason} at byte {error.start})") from error
+        start = error.start + (len(codecs.BOM_UTF8) if data.startswith(codecs.BOM_UTF8) else 0)
+        raise PresetError(f"is not UTF-8 text ({error.reason} at byte {start})") from error
 
 
 def _read_capped(fd):
@@ -214,6 +216,27 @@ def _check_target(path, overwrite):
         raise PresetError(f"{path} exists and is not a regular file")
     if not overwrite:
         raise PresetExistsError(f"preset '{path.stem}' already exists ({path}): pass overwrite to replace it")
+
+
+class PresetGoneError(PresetError):
+    """The preset's file is no longer there (deleted or moved outside Blender)."""
+
+
+def remove_preset(path):
+    """Deletes the preset file `path` (a symbolic link itself, never its target).
+
+    PresetGoneError when the file is gone already, PresetError when it cannot be
+    deleted; each one line that names the file.
+    """
+    path = Path(path)
+    try:
+        path.unlink()
+    except FileNotFoundError as error:
+        raise PresetGoneError(
+            f"its file {path} is gone already (deleted or moved outside Blender)"
+        ) from error
+    except OSError as error:
+        raise PresetError(f"cannot delete {path} ({error.strerror or error})") from error
 
 
 def _write_atomic(path, data):

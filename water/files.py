@@ -38,6 +38,7 @@ import inspect
 import os
 import re
 import shutil
+import stat
 import tempfile
 from pathlib import Path
 
@@ -53,10 +54,32 @@ class FileJobError(RuntimeError):
     """A file job that cannot run: a missing file, a bad path or value."""
 
 
+_KINDS = (
+    (stat.S_ISDIR, "a folder"),
+    (stat.S_ISFIFO, "a FIFO"),
+    (stat.S_ISCHR, "a character device"),
+    (stat.S_ISBLK, "a block device"),
+    (stat.S_ISSOCK, "a socket"),
+)
+
+
+def _not_regular(path, mode):
+    """FileJobError saying that `path` (of stat `mode`) is not a regular file, and what it is."""
+    kind = next((name for test, name in _KINDS if test(mode)), "a file of another kind")
+    return FileJobError(f"not a regular file ({kind}): {path}")
+
+
 def _open(path):
     path = Path(path)
-    if not path.is_file():
-        raise FileJobError(f"no such .blend file: {path}")
+    try:
+        mode = path.stat().st_mode  # through a symbolic link; never opens a FIFO (that blocks)
+    except FileNotFoundError:  # also a dangling symbolic link
+        raise FileJobError(f"no such .blend file: {path}") from None
+    except (OSError, ValueError) as error:
+        reason = getattr(error, "strerror", None) or error
+        raise FileJobError(f"cannot read {path} ({reason})") from None
+    if not stat.S_ISREG(mode):
+        raise _not_regular(path, mode)
     if _kept is not None:
         _kept.take()
     try:
@@ -94,6 +117,8 @@ def _output_file(path):
     """FileJobError when `path` (in a checked folder) is a folder or a file that may not be written."""
     if path.is_dir():
         raise FileJobError(f"the output is a folder, not a file: {path}")
+    if path.exists() and not path.is_file():  # writing a FIFO blocks, a device is no image
+        raise _not_regular(path, path.stat().st_mode)
     if path.exists() and not _can_write(path):
         raise FileJobError(f"cannot write over {path} (it is read-only)")
     return path
@@ -230,18 +255,37 @@ def frame_path(target, frame):
 
 
 def parse_frames(text):
-    """ "7" or "1-48" as a list of frame numbers; FileJobError when it is neither."""
-    match = re.fullmatch(r"\s*(-?\d+)\s*(?:-\s*(-?\d+)\s*)?", text or "")
+    """ "7" or "1-48" as a list of frame numbers; FileJobError, one short line, when it is
+    neither or a frame is outside Blender's range (also one of thousands of digits)."""
+    pattern = r"\s*(-?[0-9]+)\s*(?:-\s*(-?[0-9]+)\s*)?"
+    match = re.fullmatch(pattern, text, re.ASCII) if isinstance(text, str) else None
     if match is None:
-        raise FileJobError(f"--frames takes N or FIRST-LAST, not '{text}'")
-    first = int(match.group(1))
-    last = int(match.group(2)) if match.group(2) is not None else first
+        raise FileJobError(f"frames must be N or FIRST-LAST (e.g. 1-48), not {shown(text)}")
+    first = _frame_number(match.group(1))
+    last = _frame_number(match.group(2)) if match.group(2) is not None else first
     if last < first:
-        raise FileJobError(f"--frames {text}: the last frame comes before the first")
-    for frame in (first, last):
-        if not MIN_FRAME <= frame <= MAX_FRAME:
-            raise FileJobError(f"frame {frame} is outside Blender's range {MIN_FRAME}..{MAX_FRAME}")
+        raise FileJobError(f"frames {shown(text)}: the last frame comes before the first")
     return list(range(first, last + 1))
+
+
+def _frame_number(digits):
+    """The frame `digits` ("-12") name, within Blender's range, read without int()'s digit limit."""
+    if len(digits.lstrip("-").lstrip("0")) > len(str(MAX_FRAME)):
+        raise FileJobError(f"frame {shown(digits)} is outside Blender's range {MIN_FRAME}..{MAX_FRAME}")
+    frame = int(digits)
+    if not MIN_FRAME <= frame <= MAX_FRAME:
+        raise FileJobError(f"frame {frame} is outside Blender's range {MIN_FRAME}..{MAX_FRAME}")
+    return frame
+
+
+def shown(text, limit=32):
+    """`text` quoted for a one-line message (also the command line's): printable, and cut short
+    when long (a number of thousands of digits is named by its first ones and its length)."""
+    if not isinstance(text, str):
+        return type(text).__name__
+    cut = text[:limit]
+    quoted = repr(cut) if cut.isprintable() else ascii(cut)
+    return quoted if len(text) <= limit else f"{quoted[:-1]}...{quoted[-1]} ({len(text)} characters)"
 
 
 MIN_FRAME, MAX_FRAME = -1048574, 1048574  # Blender's MINAFRAME and MAXFRAME

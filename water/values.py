@@ -74,6 +74,7 @@ def write_values(material, values):
     lake's (`_shader_node`).
     Inputs the group lacks, or holds with another type, are skipped; returns the keys set.
     """
+    schema.check_types(values)  # a value of the wrong type: PresetError, before anything is set
     node = _shader_node(material)
     if node is None:
         return []
