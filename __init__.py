@@ -6,9 +6,9 @@ order on register and in reverse on unregister, so that disabling the add-on
 leaves nothing behind.
 """
 
-from . import cli, nodes, operators, presets, ui
+from . import cli, handlers, nodes, operators, presets, ui
 
-_packages = (nodes, presets, operators, ui, cli)
+_packages = (nodes, presets, handlers, operators, ui, cli)
 
 
 def register():

@@ -10,7 +10,7 @@ whatever extension repository it was installed into::
     added = water_api.add_water(preset="windy_river", size=40)
 
 Bad input raises PresetError, AddWaterError, MirrorSetupError, SurroundingsError, PhysicalCausticsError,
-FloatError,
+FloatError, RemoveWaterError,
 NotEditableError (linked or overridden data, never edited) or FileJobError, each with a one-line
 message; nothing is left half made.
 """
@@ -23,8 +23,10 @@ from . import presets as _presets
 from .presets import PresetError
 from .water import files as _files
 from .water import floating as _floating
+from .water import kind as _kind
 from .water import mirror as _mirror
 from .water import physical_caustics as _physical_caustics
+from .water import removal as _removal
 from .water import surroundings as _surroundings
 from .water import values as _values
 from .water import waves as _waves
@@ -35,6 +37,7 @@ from .water.mirror import MirrorSetupError
 from .water.physical_caustics import PhysicalCausticsError
 from .water.plane import AddedWater, AddWaterError
 from .water.plane import add_water as _add_water
+from .water.removal import RemoveWaterError
 from .water.repair import needs_repair
 from .water.surroundings import SurroundingsError
 
@@ -47,16 +50,19 @@ __all__ = (
     "NotEditableError",
     "PhysicalCausticsError",
     "PresetError",
+    "RemoveWaterError",
     "add_water",
     "add_water_to_file",
     "add_waves",
     "apply_preset",
     "float_on_water",
     "is_water",
+    "kind_of",
     "preset_ids",
     "read_values",
     "render_file",
     "remove_surroundings",
+    "remove_water",
     "set_physical_caustics",
     "set_surroundings",
     "setup_mirror",
@@ -95,9 +101,22 @@ def add_water(
     )
 
 
+def remove_water(water: bpy.types.Object, scene: bpy.types.Scene | None = None) -> list[str]:
+    """Removes `water` and everything the add-on made for it that nothing else uses: its probe,
+    surroundings, light linking, floating constraints on other objects, Physical Caustics, and
+    the scene settings its set-up changed (put back only when unchanged since and needed by no
+    other water). Returns the changes in words; RemoveWaterError for an object that is not water."""
+    return _removal.remove_water(water, scene or bpy.context.scene)
+
+
 def is_water(obj: bpy.types.Object | None) -> bool:
     """Whether `obj` has a material the add-on made (lake or ocean shading)."""
     return _values.is_water(obj)
+
+
+def kind_of(obj: bpy.types.Object | None) -> str | None:
+    """ "lake", "ocean" (the four-sine ocean's shading) or "open_sea" for a water, None otherwise."""
+    return _kind.kind_of(obj)
 
 
 def setup_mirror(water: bpy.types.Object, scene: bpy.types.Scene | None = None) -> list[str]:
@@ -189,8 +208,21 @@ def preset_ids() -> list[str]:
 
 
 def apply_preset(water: bpy.types.Object, preset: str) -> None:
-    """Sets the lake water's shader values from a preset (its plane values are left alone)."""
-    write_values(water, _presets.get(preset).values)
+    """Sets the lake water's shader values from a preset (its plane values are left alone).
+
+    PresetError for water whose kind takes no presets (ocean shading), as the operator refuses it.
+    """
+    chosen = _presets.get(preset)
+    why = _kind.refusal(water, "presets", subject=f"'{getattr(water, 'name', water)}'")
+    why = why or _kind.preset_refusal(chosen.name, chosen.values)
+    if why is not None:
+        raise PresetError(why)
+    material = _values.water_material(water)
+    check_editable(water, material)
+    problem = needs_repair(material)
+    if problem:
+        raise MirrorSetupError(problem)
+    _values.set_values(material, chosen.values)  # checked and clamped when read
 
 
 def add_water_to_file(source: str, target: str, **options: object) -> str:

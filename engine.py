@@ -18,6 +18,15 @@ def eevee_engine_id():
     raise RuntimeError(f"no EEVEE render engine among {sorted(engines)}")
 
 
+# The EEVEE settings under which the water shows traced reflection and refraction:
+# (RNA path from the scene, value, what it means in words).
+RAY_TRACING = (
+    ("eevee.use_raytracing", True, "EEVEE ray tracing"),
+    ("eevee.ray_tracing_method", "SCREEN", "ray tracing method"),
+    ("eevee.ray_tracing_options.resolution_scale", "1", "ray tracing resolution"),
+)
+
+
 def enable_ray_tracing(scene):
     """EEVEE settings under which the water shows traced reflection and refraction.
 
@@ -25,15 +34,10 @@ def enable_ray_tracing(scene):
     maps; a full-resolution trace keeps the mirror sharp (the default traces at half).
     Returns the names of the settings it changed.
     """
-    eevee = scene.eevee
-    options = eevee.ray_tracing_options
-    wanted = (
-        (eevee, "use_raytracing", True),
-        (eevee, "ray_tracing_method", "SCREEN"),
-        (options, "resolution_scale", "1"),
-    )
     changed = []
-    for owner, prop, value in wanted:
+    for path, value, _label in RAY_TRACING:
+        owner_path, _, prop = path.rpartition(".")
+        owner = scene.path_resolve(owner_path)
         if getattr(owner, prop) != value:
             setattr(owner, prop, value)
             changed.append(prop)

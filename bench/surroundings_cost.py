@@ -114,7 +114,8 @@ def main():
     old = bpy.data.objects.new("Old set-up", plane.new_water_mesh("Old set-up", SIZE, RESOLUTION))
     waves.add_waves(old)
     measuring = old.modifiers.new("Water Surroundings", "NODES")
-    measuring.node_group = specs.ensure_group(specs.SPECS["Water Surroundings"], specs.SPECS)
+    builder = harness.addon("nodes.builder")
+    measuring.node_group = builder.ensure_group(specs.SPECS["Water Surroundings"], specs.SPECS)
     waves.set_wave_input(measuring, "Surroundings", seen)
 
     with_surroundings = [water, cache]

@@ -1,7 +1,10 @@
-"""Node groups and the water material, each group described as data and built by one builder."""
+"""Node groups and the water material, each group described as data and built by one builder.
+
+This package's descriptions (`SPECS`) are plain data and import without Blender; the builder
+(`builder.py`) and the material modules are the parts that need `bpy`.
+"""
 
 from . import bump_uv, caustics, ocean, sea_fade, surroundings, water_surface, water_waves, wind_frame
-from .builder import NodeGroupError, ensure_group
 
 SPECS = {
     spec.name: spec
@@ -19,7 +22,7 @@ SPECS = {
     )
 }
 
-__all__ = ("SPECS", "NodeGroupError", "ensure_group")
+__all__ = ("SPECS",)
 
 
 def register():

@@ -6,7 +6,6 @@ saved file renders with auto-run scripts off and without the add-on.
 
 import bpy
 
-from ..water.editable import check_editable
 from . import SPECS, water_surface
 from .builder import ensure_group
 from .bump_image import ensure_bump_image
@@ -105,7 +104,6 @@ def foam_image(material):
 
 def set_bump_image(material, image):
     """Makes the material sample `image` (None: the default bump); its values stay as they were."""
-    check_editable(material)
     water_node(material).node_tree = water_group(image)
 
 

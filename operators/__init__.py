@@ -12,6 +12,7 @@ from .preset_ops import (
     OBJECT_OT_water_surface_preset_apply,
     OBJECT_OT_water_surface_preset_remove,
 )
+from .remove_ops import OBJECT_OT_water_remove
 from .repair_ops import OBJECT_OT_water_surface_repair
 from .surroundings_ops import OBJECT_OT_water_surroundings_set
 from .waves_ops import OBJECT_OT_water_waves_add
@@ -30,6 +31,7 @@ classes = (
     OBJECT_OT_water_physical_caustics,
     OBJECT_OT_water_float,
     OBJECT_OT_water_float_stop,
+    OBJECT_OT_water_remove,
 )
 
 _register_classes, _unregister_classes = bpy.utils.register_classes_factory(classes)

@@ -6,7 +6,7 @@ Linked, overridden or missing library data is refused: edits to it live only in
 memory and vanish when the file is reloaded.
 """
 
-from ..nodes.material import water_node
+from ..water import kind
 from ..water.editable import why_not_editable
 from ..water.repair import needs_repair
 from ..water.values import water_material
@@ -36,21 +36,18 @@ def scene_editable(cls, context):
     return True
 
 
-def lake_water(cls, context, purpose, editable=True):
-    """The active object is lake water, not needing repair, and (when `editable`) all local.
-
-    `purpose` ends the message for ocean water ("this choice is for lake water").
-    Checked: the object, its mesh, the material and the `Water Surface` group.
+def water_allowing(cls, context, feature, editable=True):
+    """The active object is water whose kind allows `feature` (`kind.FEATURES`), not needing
+    repair, and (when `editable`) all local: the object, its mesh, the material and its groups.
     """
     obj = context.active_object
+    why = kind.refusal(obj, feature)
+    if why is not None:
+        return refuse(cls, why)
     material = water_material(obj)
-    if material is None:
-        return refuse(cls, NOT_WATER)
-    node = water_node(material)
-    if node is None:
-        return refuse(cls, f"The active object has ocean shading: {purpose}")
     if editable:
-        why = why_not_editable(obj, obj.data, material, node.node_tree)
+        groups = [n.node_tree for n in material.node_tree.nodes if n.type == "GROUP" and n.node_tree]
+        why = why_not_editable(obj, obj.data, material, *groups)
         if why is not None:
             return refuse(cls, why)
     problem = needs_repair(material)

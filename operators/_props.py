@@ -31,3 +31,9 @@ def field_property(key):
     return bpy.props.FloatProperty(
         default=field.default, min=field.min, max=field.max, **extra, **soft, **common
     )
+
+
+def add_field_properties(cls, keys):
+    """Gives operator `cls` (before it is registered) a property for each preset field in `keys`."""
+    for key in keys:
+        cls.__annotations__[key] = field_property(key)

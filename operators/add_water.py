@@ -6,7 +6,7 @@ from bpy_extras import object_utils
 from .. import presets
 from ..presets import schema
 from ..water.plane import AddWaterError, add_water
-from ._props import field_property
+from ._props import add_field_properties
 
 KEYS = tuple(field.key for field in schema.FIELDS)
 
@@ -42,33 +42,7 @@ class OBJECT_OT_water_surface_add(object_utils.AddObjectHelper, bpy.types.Operat
         default=0,
         update=_apply_preset,
     )
-    shading: field_property("shading")
-    size: field_property("size")
-    resolution: field_property("resolution")
-    waves: field_property("waves")
-    wave_height: field_property("wave_height")
-    wave_length: field_property("wave_length")
-    wind_direction: field_property("wind_direction")
-    wind_force: field_property("wind_force")
-    dull_color: field_property("dull_color")
-    dull_blend: field_property("dull_blend")
-    specular_power: field_property("specular_power")
-    specular_strength: field_property("specular_strength")
-    bump_strength: field_property("bump_strength")
-    bump_layers: field_property("bump_layers")
-    absorption: field_property("absorption")
-    scatter_color: field_property("scatter_color")
-    foam_width: field_property("foam_width")
-    foam_amount: field_property("foam_amount")
-    caustics: field_property("caustics")
-    caustics_scale: field_property("caustics_scale")
-    sea: field_property("sea")
-    sea_wind_speed: field_property("sea_wind_speed")
-    sea_spectrum: field_property("sea_spectrum")
-    sea_choppiness: field_property("sea_choppiness")
-    sea_depth: field_property("sea_depth")
-    sea_seed: field_property("sea_seed")
-    whitecaps: field_property("whitecaps")
+    # Every preset key (`schema.FIELDS`) is a property too, made from the schema below the class.
     mirror_setup: bpy.props.BoolProperty(
         name="Mirror Set-Up",
         description="Turn on EEVEE ray tracing and add a planar probe so the water shows a true mirror",
@@ -150,3 +124,6 @@ class OBJECT_OT_water_surface_add(object_utils.AddObjectHelper, bpy.types.Operat
         summary = added.summary(preset.name)
         self.report({"INFO"}, summary[0].upper() + summary[1:])
         return {"FINISHED"}
+
+
+add_field_properties(OBJECT_OT_water_surface_add, KEYS)

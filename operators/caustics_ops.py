@@ -24,7 +24,7 @@ class OBJECT_OT_water_physical_caustics(bpy.types.Operator):
 
     @classmethod
     def poll(cls, context):
-        return _poll.lake_water(cls, context, "physical caustics are set up for lake water")
+        return _poll.water_allowing(cls, context, "physical_caustics")
 
     def execute(self, context):
         water = context.active_object

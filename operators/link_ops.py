@@ -4,8 +4,8 @@ import bpy
 
 from ..nodes.bump_image import IMAGE_NAME as BUMP_IMAGE_NAME
 from ..nodes.bump_image import is_bump_image
-from ..nodes.material import drive_sun, glint_sun, set_bump_image, water_node
-from ..water import sun_link
+from ..nodes.material import drive_sun, glint_sun, set_bump_image
+from ..water import kind, sun_link
 from ..water.editable import NotEditableError, check_editable
 from ..water.values import water_material
 from . import _poll
@@ -34,21 +34,22 @@ class _LakeChoice:
     """A searchable choice applied to the active object's lake material."""
 
     bl_options = {"REGISTER", "UNDO"}
+    feature = "sun_choice"  # the choice's name in `kind.FEATURES`
 
     @classmethod
     def poll(cls, context):
-        return _poll.lake_water(cls, context, "this choice is for lake water")
+        return _poll.water_allowing(cls, context, cls.feature)
 
     def invoke(self, context, _event):
         context.window_manager.invoke_search_popup(self)
         return {"RUNNING_MODAL"}
 
     def execute(self, context):
-        material = water_material(context.active_object)
-        if water_node(material) is None:
-            what = "has ocean shading" if material is not None else "is not water"
-            self.report({"ERROR"}, f"The active object {what}: this choice is for lake water")
+        why = kind.refusal(context.active_object, self.feature)
+        if why is not None:
+            self.report({"ERROR"}, why)
             return {"CANCELLED"}
+        material = water_material(context.active_object)
         try:
             self.report({"INFO"}, self.choose(context, material))
         except NotEditableError as error:
@@ -84,10 +85,12 @@ class OBJECT_OT_water_surface_bump_set(_LakeChoice, bpy.types.Operator):
     bl_idname = "object.water_surface_bump_set"
     bl_label = "Bump Image"
     bl_property = "image"
+    feature = "bump_choice"
 
     image: bpy.props.EnumProperty(name="Image", items=_image_items)
 
     def choose(self, _context, material):
         image = None if self.image == "DEFAULT" else bpy.data.images.get(self.image)
+        check_editable(material)
         set_bump_image(material, image)
         return f"'{material.name}' samples {'the default bump' if image is None else repr(image.name)}"

@@ -3,7 +3,7 @@
 import bpy
 
 from ..water import mirror
-from ..water.values import is_water, water_material
+from ..water.values import is_water
 from . import _poll
 
 
@@ -33,7 +33,7 @@ class OBJECT_OT_water_mirror_setup(bpy.types.Operator):
             except ValueError as error:  # needs repair, or linked data: one line, nothing changed
                 self.report({"ERROR"}, str(error))
                 return {"CANCELLED"}
-            if not mirror.needs_mirror(water_material(water)):
+            if not mirror.needs_mirror(water):
                 what = "has ocean shading: it reflects the world's sky and needs no mirror set-up"
                 self.report({"INFO"}, f"'{water.name}' {what}")
             else:

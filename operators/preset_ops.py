@@ -3,18 +3,18 @@
 import bpy
 
 from .. import presets
-from ..nodes.material import water_node
-from ..water.values import read_values, water_material, write_values
+from ..water import kind
+from ..water.values import read_values, set_values, water_material
+from . import _poll
 
 
 def _active_water(operator, context):
-    """The active object's lake material, or None after reporting why not."""
-    material = water_material(context.active_object)
-    if water_node(material) is None:
-        what = "has ocean shading (edit it in the panel)" if material is not None else "is not water"
-        operator.report({"ERROR"}, f"The active object {what}: presets hold lake water values")
+    """The active object's lake material, or None after reporting why not (`kind.refusal`)."""
+    why = kind.refusal(context.active_object, "presets")
+    if why is not None:
+        operator.report({"ERROR"}, why)
         return None
-    return material
+    return water_material(context.active_object)
 
 
 class OBJECT_OT_water_surface_preset_apply(bpy.types.Operator):
@@ -28,19 +28,18 @@ class OBJECT_OT_water_surface_preset_apply(bpy.types.Operator):
 
     @classmethod
     def poll(cls, context):
-        from ._poll import lake_water
-
-        return lake_water(cls, context, "presets hold lake water values (edit it in the panel)")
+        return _poll.water_allowing(cls, context, "presets")
 
     def execute(self, context):
         material = _active_water(self, context)
         if material is None:
             return {"CANCELLED"}
         preset = presets.get(self.preset)
-        if preset.values["shading"] != "lake":
-            self.report({"ERROR"}, f"'{preset.name}' builds its own mesh and shading: add it from Add > Mesh")
+        why = kind.preset_refusal(preset.name, preset.values)
+        if why is not None:
+            self.report({"ERROR"}, why)
             return {"CANCELLED"}
-        write_values(material, preset.values)
+        set_values(material, preset.values)  # checked and clamped when the preset was read
         self.report({"INFO"}, f"Applied preset '{preset.name}' to '{material.name}'")
         return {"FINISHED"}
 
@@ -63,9 +62,7 @@ class OBJECT_OT_water_surface_preset_add(bpy.types.Operator):
     @classmethod
     def poll(cls, context):
         # Saving reads the values only: linked water may be saved as a preset.
-        from ._poll import lake_water
-
-        return lake_water(cls, context, "presets hold lake water values", editable=False)
+        return _poll.water_allowing(cls, context, "presets", editable=False)
 
     def invoke(self, context, _event):
         return context.window_manager.invoke_props_dialog(self)

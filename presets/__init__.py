@@ -7,8 +7,6 @@ a warning on the console and never stops the add-on.
 
 import sys
 
-import bpy
-
 from . import schema, store
 from .schema import PresetError
 from .store import PresetExistsError, PresetGoneError
@@ -20,7 +18,12 @@ _enum_items = []  # kept alive: Blender does not copy the strings of dynamic enu
 
 
 def user_dir(create=True):
-    """Where the user's presets are saved (outside the add-on's folder)."""
+    """Where the user's presets are saved (outside the add-on's folder).
+
+    The one part of presets that needs Blender: imported here, so schema, store and the rest
+    import and are tested without it."""
+    import bpy
+
     return bpy.utils.extension_path_user(ADDON_PACKAGE, path="presets", create=create)
 
 

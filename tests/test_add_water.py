@@ -135,8 +135,8 @@ def test_mirror_set_up_turns_tracing_on_adds_a_world_and_one_probe_that_follows_
     water = bpy.context.active_object
     assert _probe(water) is None and scene.world is None
     changes = harness.addon("water.mirror").setup_mirror(scene, water)
-    assert "added planar probe 'Water Mirror'" in changes and "EEVEE ray tracing on" in changes
-    assert any(change.startswith("added world") for change in changes)
+    assert "added planar probe 'Water Mirror'" in changes and "EEVEE ray tracing: False -> True" in changes
+    assert any(change.startswith("world: none -> 'Sky") for change in changes)
     bpy.ops.object.water_mirror_setup()  # again: reused, not duplicated
     probes = [o for o in bpy.data.objects if o.type == "LIGHT_PROBE"]
     assert len(probes) == 1 and probes[0].parent is water

@@ -149,7 +149,7 @@ def test_half_built_group_is_removed_and_named_in_the_error(scene):
         links=(("input:X", "add:#0"), ("add:Value", "nowhere:#0")),
     )
     with pytest.raises(RuntimeError, match="'Broken Water'.*nowhere"):
-        _nodes().ensure_group(broken, {})
+        harness.addon("nodes.builder").ensure_group(broken, {})
     assert "Broken Water" not in bpy.data.node_groups
 
 

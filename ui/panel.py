@@ -10,7 +10,7 @@ from ..nodes.material import bump_image, glint_sun, water_node
 from ..nodes.ocean_material import ocean_nodes
 from ..nodes.water_surface import DEBUG_VIEWS
 from ..nodes.water_waves import WAVE_COUNT
-from ..water import floating, open_sea, physical_caustics
+from ..water import floating, kind, open_sea, physical_caustics
 from ..water.editable import why_not_editable
 from ..water.mirror import find_probe
 from ..water.repair import needs_repair
@@ -81,7 +81,9 @@ class VIEW3D_PT_water_surface(bpy.types.Panel):
             self.draw_floating(layout, context)
             return
         node = water_node(material)
-        layout.label(text=f"Material: {material.name}", icon="MATERIAL")
+        row = layout.row(align=True)
+        row.label(text=f"Material: {material.name}", icon="MATERIAL")
+        row.operator("object.water_remove", text="", icon="TRASH")
         why = why_not_editable(context.active_object, material)
         if why is not None:
             layout.label(text=why, icon="LIBRARY_DATA_DIRECT")
@@ -92,13 +94,14 @@ class VIEW3D_PT_water_surface(bpy.types.Panel):
             layout.operator("object.water_surface_repair", icon="TOOL_SETTINGS")
             self.draw_waves(layout, context.active_object)
             return
-        if node is None:
+        obj = context.active_object
+        if not kind.allows(obj, "presets"):  # ocean shading: its own inputs, the sea's or waves
             self.draw_ocean(layout, material)
-            self.draw_ocean_surroundings(layout, context.active_object, material)
-            if open_sea.is_open_sea(context.active_object):
-                self.draw_sea(layout, context.active_object, material)
-            else:
-                self.draw_waves(layout, context.active_object)
+            self.draw_ocean_surroundings(layout, obj, material)
+            if kind.allows(obj, "whitecaps"):
+                self.draw_sea(layout, obj, material)
+            if kind.allows(obj, "waves"):
+                self.draw_waves(layout, obj)
             return
 
         row = layout.row(align=True)

@@ -3,6 +3,22 @@
 import bpy
 import numpy as np
 
+from ..presets import schema
+
+BYTES_PER_VERTEX = 400  # mesh, wave attribute and evaluated copy, measured with margin
+
+
+def max_resolution():
+    """Vertices per side a grid may have: the schema's cap, or less on a machine short of memory."""
+    try:
+        with open("/proc/meminfo", encoding="ascii") as meminfo:
+            available = next(
+                int(line.split()[1]) * 1024 for line in meminfo if line.startswith("MemAvailable")
+            )
+    except (OSError, StopIteration, ValueError):
+        return schema.RESOLUTION.max
+    return int(min(schema.RESOLUTION.max, max(schema.RESOLUTION.min, (available / BYTES_PER_VERTEX) ** 0.5)))
+
 
 def grid_mesh(name, axis, uv_metres):
     """A smooth-shaded grid with vertices at `axis` x `axis` (XY plane), quads facing +Z, and UVs

@@ -17,11 +17,12 @@ water's only highlight is its glint.
 import bpy
 import numpy as np
 
-from ..engine import eevee_engine_id, enable_ray_tracing
-from ..nodes.material import glint_sun, water_node
+from ..engine import RAY_TRACING, eevee_engine_id
+from ..nodes.material import glint_sun
 from ..nodes.ownership import is_original, mark, owned
-from . import sun_link
+from . import kind, sun_link
 from .editable import check_editable
+from .ledger import claim, held_paths, holders, release
 from .repair import needs_repair
 from .values import water_material
 from .waves import amplitude_sum, wave_modifier
@@ -31,12 +32,6 @@ PROBE_ROLE = "Mirror Probe"
 PROBE_LIFT = 0.01  # metres above the water
 SKY_COLOR = (0.45, 0.6, 0.85)
 SKY_NAME = "Sky"
-
-_SETTING_NAMES = {
-    "use_raytracing": "EEVEE ray tracing on",
-    "ray_tracing_method": "ray tracing method: screen trace",
-    "resolution_scale": "ray tracing at full resolution",
-}
 
 
 class MirrorSetupError(ValueError):
@@ -53,6 +48,15 @@ def _is_mirror_probe(obj):
     )
 
 
+def is_lost_probe(obj):
+    """Whether `obj` is a mirror probe of the add-on's whose water is gone (deleted, or no longer
+    a water): neither its parent nor the object of the name it records is a water."""
+    if not _is_mirror_probe(obj):
+        return False
+    water = obj.parent if obj.parent is not None else bpy.data.objects.get(obj[PROBE_TAG])
+    return water is None or water_material(water) is None
+
+
 def find_probe(water):
     """The planar probe made for `water`, or None: its child, or one the user unparented or
     parented elsewhere (tagged with the water's name)."""
@@ -65,10 +69,10 @@ def find_probe(water):
     )
 
 
-def needs_mirror(material):
-    """The one rule for which water gets the mirror set-up: lake shading does; the ocean
-    shading reflects the world's sky and needs none."""
-    return water_node(material) is not None
+def needs_mirror(water):
+    """Whether `water` gets the mirror set-up's probe and light linking (`kind.FEATURES`): lake
+    shading does; the ocean shading reflects the world's sky."""
+    return kind.allows(water, "mirror")
 
 
 def rest_bounds(water):
@@ -167,6 +171,28 @@ def sky_world():
     return world, True
 
 
+def _holder(water):
+    return f"mirror:{water.name}"
+
+
+def _holds_mirror(holder):
+    """Whether the water named in `holder` still has its mirror set-up (it is still water)."""
+    water = bpy.data.objects.get(holder.partition(":")[2])
+    return water is not None and water_material(water) is not None and bool(water.users_scene)
+
+
+def release_mirror(scene, water):
+    """Lets go of what `setup_mirror` set for `water` in `scene` (the engine, ray tracing, the
+    world): each goes back only when it still holds the add-on's value and no other water in the
+    file needs it; the sun's light linking lets go of the water. Returns the changes in words."""
+    changes = []
+    holder = _holder(water)
+    for path in held_paths(scene, holder):
+        release(scene, path, holder, path.rpartition(".")[2].replace("_", " "), changes, _holds_mirror)
+    sun_link.release_everywhere(water)
+    return changes
+
+
 def setup_mirror(scene, water):
     """Sets `scene` and `water` up for a true mirror; returns what it changed, in words.
 
@@ -184,20 +210,25 @@ def setup_mirror(scene, water):
     if problem:
         raise MirrorSetupError(problem)
     changes = []
-    if scene.render.engine == "BLENDER_WORKBENCH":
-        scene.render.engine = eevee_engine_id()
-        changes.append("render engine set to EEVEE")
+    holder = _holder(water)
+    # Workbench shows no water; once the add-on chose EEVEE, each water needs it too.
+    if scene.render.engine == "BLENDER_WORKBENCH" or holders(scene, "render.engine"):
+        claim(scene, "render.engine", eevee_engine_id(), holder, "render engine", changes)
     # Both shadings trace refraction (the ocean's through shallow water to the bed).
-    changes += [_SETTING_NAMES[name] for name in enable_ray_tracing(scene)]
-    if not needs_mirror(material):
+    for path, value, label in RAY_TRACING:
+        claim(scene, path, value, holder, label, changes)
+    if not needs_mirror(water):
         return changes
     if not material.use_raytrace_refraction:
         material.use_raytrace_refraction = True
         changes.append(f"ray-traced refraction on for '{material.name}'")
     if scene.world is None:
         world, made = sky_world()
-        scene.world = world
-        changes.append(f"{'added' if made else 'set the'} world '{world.name}'")
+        if made:
+            changes.append(f"added world '{world.name}'")
+        claim(scene, "world", {"id": "WORLD", "name": world.name}, holder, "world", changes)
+    elif holders(scene, "world"):  # the sky the add-on gave the scene: this water needs it too
+        claim(scene, "world", {"id": "WORLD", "name": scene.world.name}, holder, "world", changes)
     if not water.hide_probe_plane:
         water.hide_probe_plane = True
         changes.append(f"'{water.name}' hidden from planar captures")

@@ -3,10 +3,11 @@
 MNEE finds the paths from the sun through the refractive water to what lies below: it needs
 the water to be a caustics caster that casts shadows, with smooth normals; the objects below to
 be receivers; the sun to be a caustics light; and refractive caustics on. Switched on, the
-shader's own pattern (`Caustics`) is set to 0, so the light is not focused twice; what was there
-before is kept on the water (`STATE_KEY`) and put back when switched off, so nothing of the
-user's is lost. Every change is reported in words. Only Cycles renders these; EEVEE shows no
-caustics while they are on.
+shader's own pattern (`Caustics`) is set to 0, so the light is not focused twice. Every setting
+goes through the ledger (`ledger.py`): switched off, a setting is put back only when it still
+holds what the switch set and no other water with physical caustics on needs it, so nothing of
+the user's is lost and one water switched off never breaks another. Every change is reported
+in words. Only Cycles renders these; EEVEE shows no caustics while they are on.
 """
 
 import json
@@ -14,11 +15,16 @@ import json
 import bpy
 
 from ..nodes.material import first_sun, glint_sun, water_node
+from . import kind
 from .editable import check_editable
+from .ledger import claim, release
 from .surroundings import surroundings_collection
 from .values import water_material
 
-STATE_KEY = "water_surface_physical_caustics"  # on the water: JSON of what was changed, to undo it
+STATE_KEY = "water_surface_physical_caustics"  # on the water: JSON of what to let go of when off
+RECEIVER = "cycles.is_caustics_receiver"
+LIGHT = "cycles.is_caustics_light"
+REFRACTIVE = "cycles.caustics_refractive"
 MIN_BOUNCES = {"transmission_bounces": 8, "transparent_max_bounces": 8, "max_bounces": 8}
 
 
@@ -31,9 +37,17 @@ def is_on(water):
     return water is not None and STATE_KEY in water
 
 
+def _holder(water):
+    return f"caustics:{water.name}"
+
+
+def _shader_path(material):
+    node = bpy.utils.escape_identifier(water_node(material).name)
+    return f'node_tree.nodes["{node}"].inputs["Caustics"].default_value'
+
+
 def _sun(water, scene):
-    material = water_material(water)
-    sun = glint_sun(material) if material is not None and water_node(material) is not None else None
+    sun = glint_sun(water_material(water)) if kind.kind_of(water) == kind.LAKE else None
     return sun if sun is not None else first_sun(scene)
 
 
@@ -44,28 +58,15 @@ def _receivers(water):
     return [o for o in collection.all_objects if o.type == "MESH" and o.library is None and o != water]
 
 
-def _set(owner, path, value, before, key, label, changes):
-    """Sets `owner.<path>` to `value`, keeping the old value in `before[key]` (a key that does
-    not change when things are renamed)."""
-    *parents, name = path.split(".")
-    for parent in parents:
-        owner = getattr(owner, parent)
-    old = getattr(owner, name)
-    if old == value:
-        return
-    before[key] = old
-    setattr(owner, name, value)
-    changes.append(f"{label}: {old} -> {value}")
-
-
 def enable(water, scene):
     """Sets Cycles' manifold next-event estimation up for `water`; returns the changes in words.
 
     Raises PhysicalCausticsError when there is no water material, no surroundings below or no sun.
     """
+    why = kind.refusal(water, "physical_caustics", subject=f"'{getattr(water, 'name', water)}'")
+    if why is not None:
+        raise PhysicalCausticsError(why)
     material = water_material(water)
-    if material is None or water_node(material) is None:
-        raise PhysicalCausticsError(f"'{getattr(water, 'name', water)}' is not lake water")
     check_editable(water, material)
     if is_on(water):
         return []
@@ -77,81 +78,58 @@ def enable(water, scene):
     sun = _sun(water, scene)
     if sun is None:
         raise PhysicalCausticsError("the scene has no sun light to cast caustics")
-    before, changes = {}, []
-    _set(
-        water, "cycles.is_caustics_caster", True, before, "caster", f"'{water.name}' caustics caster", changes
-    )
-    _set(water, "visible_shadow", True, before, "shadow", f"'{water.name}' casts shadows", changes)
+    holder, changes = _holder(water), []
+    claim(water, "cycles.is_caustics_caster", True, holder, f"'{water.name}' caustics caster", changes)
+    claim(water, "visible_shadow", True, holder, f"'{water.name}' casts shadows", changes)
     smooth = [p.use_smooth for p in water.data.polygons]
     if not all(smooth):
         water.data.polygons.foreach_set("use_smooth", [True] * len(smooth))
         water.data.update()
-        before["smooth"] = False
         changes.append(f"'{water.name}' shaded smooth")
-    receivers_before = {}
     for obj in receivers:
-        _set(
-            obj,
-            "cycles.is_caustics_receiver",
-            True,
-            receivers_before,
-            obj.name,
-            f"receiver '{obj.name}'",
-            changes,
-        )
-    _set(
-        sun.data,
-        "cycles.is_caustics_light",
-        True,
-        before,
-        "light",
-        f"light '{sun.data.name}' caustics",
-        changes,
-    )
-    _set(
-        scene, "cycles.caustics_refractive", True, before, "refractive", "Cycles refractive caustics", changes
-    )
+        claim(obj, RECEIVER, True, holder, f"receiver '{obj.name}'", changes)
+    claim(sun.data, LIGHT, True, holder, f"light '{sun.data.name}' caustics", changes)
+    claim(scene, REFRACTIVE, True, holder, "Cycles refractive caustics", changes)
     for name, least in MIN_BOUNCES.items():
-        if getattr(scene.cycles, name) < least:
-            _set(scene, f"cycles.{name}", least, before, name, f"Cycles {name.replace('_', ' ')}", changes)
-    socket = water_node(material).inputs["Caustics"]
-    _set(
-        socket, "default_value", 0.0, before, "shader", "shader Caustics (Cycles computes them now)", changes
-    )
-    # Objects are kept by pointer-free names; a renamed receiver is simply left as it is.
-    water[STATE_KEY] = json.dumps({"before": before, "receivers": receivers_before, "sun": sun.data.name})
+        label = f"Cycles {name.replace('_', ' ')}"
+        claim(scene, f"cycles.{name}", least, holder, label, changes, at_least=True)
+    label = "shader Caustics (Cycles computes them now)"
+    claim(material, _shader_path(material), 0.0, holder, label, changes)
+    # What to let go of when switched off: the receivers and the sun by name (one renamed since is
+    # left as it is), and whether the mesh was shaded flat.
+    state = {"receivers": [o.name for o in receivers], "sun": sun.data.name, "flat": not all(smooth)}
+    water[STATE_KEY] = json.dumps(state)
     return changes
 
 
+def _alive(holder):
+    """Whether the water named in `holder` still has its physical caustics on."""
+    return is_on(bpy.data.objects.get(holder.partition(":")[2]))
+
+
 def disable(water, scene):
-    """Puts back what `enable` changed (values the user changed since are left as they are)."""
+    """Puts back what `enable` changed: only settings that still hold the value it set (the
+    user's later changes stay), and only what no other water with physical caustics on needs."""
     if not is_on(water):
         return []
     check_editable(water)
     state = json.loads(water[STATE_KEY])
-    before = state["before"]
-    changes = []
-    material = water_material(water)
-
-    def put_back(key, owner, path, label, saved=before):
-        if key in saved and owner is not None:
-            _set(owner, path, saved[key], {}, key, label, changes)
-
-    put_back("caster", water, "cycles.is_caustics_caster", f"'{water.name}' caustics caster")
-    put_back("shadow", water, "visible_shadow", f"'{water.name}' casts shadows")
-    if before.get("smooth") is False:
+    del water[STATE_KEY]
+    holder, changes = _holder(water), []
+    release(water, "cycles.is_caustics_caster", holder, f"'{water.name}' caustics caster", changes)
+    release(water, "visible_shadow", holder, f"'{water.name}' casts shadows", changes)
+    if state.get("flat") and all(p.use_smooth for p in water.data.polygons):
         water.data.polygons.foreach_set("use_smooth", [False] * len(water.data.polygons))
         water.data.update()
         changes.append(f"'{water.name}' shaded flat again")
-    for name in state["receivers"]:
-        obj = bpy.data.objects.get(name)
-        put_back(name, obj, "cycles.is_caustics_receiver", f"receiver '{name}'", state["receivers"])
-    light = bpy.data.lights.get(state["sun"])
-    put_back("light", light, "cycles.is_caustics_light", f"light '{state['sun']}' caustics")
-    put_back("refractive", scene, "cycles.caustics_refractive", "Cycles refractive caustics")
+    for name in state.get("receivers", ()):
+        release(bpy.data.objects.get(name), RECEIVER, holder, f"receiver '{name}'", changes, _alive)
+    light = bpy.data.lights.get(state.get("sun", ""))
+    release(light, LIGHT, holder, f"light '{state.get('sun')}' caustics", changes, _alive)
+    release(scene, REFRACTIVE, holder, "Cycles refractive caustics", changes, _alive)
     for name in MIN_BOUNCES:
-        put_back(name, scene, f"cycles.{name}", f"Cycles {name.replace('_', ' ')}")
-    if material is not None and water_node(material) is not None:
-        put_back("shader", water_node(material).inputs["Caustics"], "default_value", "shader Caustics")
-    del water[STATE_KEY]
+        release(scene, f"cycles.{name}", holder, f"Cycles {name.replace('_', ' ')}", changes, _alive)
+    if kind.kind_of(water) == kind.LAKE:
+        material = water_material(water)
+        release(material, _shader_path(material), holder, "shader Caustics", changes)
     return changes

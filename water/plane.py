@@ -10,49 +10,34 @@ from .. import presets
 from ..nodes.material import make_water_material
 from ..nodes.ocean_material import make_ocean_material
 from ..presets import schema
-from . import mirror, open_sea, surroundings, waves
+from . import kind, mirror, open_sea, scene_state, sea_math, surroundings, waves
 from .editable import check_editable
-from .grid import grid_mesh
+from .grid import grid_mesh, max_resolution
 from .sea_mesh import new_sea_mesh
-from .values import write_values
-
-BYTES_PER_VERTEX = 400  # mesh, wave attribute and evaluated copy, measured with margin
-
-
-def max_resolution():
-    """Vertices per side a grid may have: the schema's cap, or less on a machine short of memory."""
-    try:
-        with open("/proc/meminfo", encoding="ascii") as meminfo:
-            available = next(
-                int(line.split()[1]) * 1024 for line in meminfo if line.startswith("MemAvailable")
-            )
-    except (OSError, StopIteration, ValueError):
-        return schema.RESOLUTION.max
-    return int(min(schema.RESOLUTION.max, max(schema.RESOLUTION.min, (available / BYTES_PER_VERTEX) ** 0.5)))
+from .values import set_values
 
 
 def new_water_mesh(name, size, resolution=2):
-    """A square grid of edge `size` in the XY plane, `resolution` vertices a side, UVs 0..1 across it."""
-    size = schema.clamp_values({"size": size})["size"]
-    n = min(schema.clamp_values({"resolution": resolution})["resolution"], max_resolution())
-    return grid_mesh(name, np.linspace(-size / 2, size / 2, n), size)
+    """A square grid of edge `size` in the XY plane, `resolution` vertices a side, UVs 0..1 across it
+    (values already clamped where they entered, `resolve_values`)."""
+    return grid_mesh(name, np.linspace(-size / 2, size / 2, int(resolution)), size)
 
 
 def dress_water(obj, scene, values):
     """Gives `obj` a new material (lake or ocean shading) set to `values`, and the waves if asked."""
     check_editable(obj, obj.data)
-    if values.get("shading", "lake") == "ocean" or values.get("sea"):
-        material = make_ocean_material(name=obj.name, scene=scene)
-    else:
+    if kind.kind_of_values(values) == kind.LAKE:
         material = make_water_material(name=obj.name, scene=scene)
-    write_values(material, values)
+    else:
+        material = make_ocean_material(name=obj.name, scene=scene)
+    set_values(material, values)  # clamped once, by `resolve_values`
     obj.data.materials.clear()
     obj.data.materials.append(material)
     # Sunlight goes through water to what lies below (the seeds' refraction map saw the scene
     # without the water); a refraction closure would otherwise shadow the bed in both engines.
     # Cycles' physical caustics turn it back on (`physical_caustics.py`): they need the shadow.
     obj.visible_shadow = False
-    if values.get("sea"):
+    if kind.kind_of_values(values) == kind.OPEN_SEA:
         open_sea.set_sea(obj, values, scene)
         open_sea.whitecaps_input(material).default_value = values["whitecaps"]
     elif values.get("waves"):
@@ -61,15 +46,18 @@ def dress_water(obj, scene, values):
 
 
 def resolve_values(preset="lake", **overrides):
-    """A preset's values with `overrides` (preset keys) on top, all clamped.
+    """A preset's values with `overrides` (preset keys) on top, all clamped: the one place a new
+    water's values enter (the operator, the API and the command line all come through here).
 
-    Raises PresetError for an unknown preset or key.
+    Raises PresetError for an unknown preset or key, or a value of the wrong type.
     """
     unknown = set(overrides) - set(schema.BY_KEY)
     if unknown:
         raise presets.PresetError(f"unknown water value(s): {', '.join(sorted(unknown))}")
+    given = {k: v for k, v in overrides.items() if v is not None}
+    schema.check_types(given)
     values = dict(presets.get(preset).values)
-    values.update({k: v for k, v in overrides.items() if v is not None})
+    values.update(given)
     return schema.clamp_values(values)
 
 
@@ -88,7 +76,7 @@ class AddedWater:
         """One line for a report or the command line."""
         text = f"added '{self.object.name}' ({preset_name}, {self.values['size']:g} m)"
         text += f" with material '{self.material.name}'"
-        if not mirror.needs_mirror(self.material):
+        if not mirror.needs_mirror(self.object):
             text += "; the ocean reflects the world's sky, no mirror set-up needed"
         if self.changes:
             text += "; set-up: " + ", ".join(self.changes)
@@ -129,7 +117,8 @@ def add_water(
     scene = scene or bpy.context.scene
     values = resolve_values(preset, **overrides)
     notes = []
-    note = open_sea.sea_memory_note() if values["sea"] else None
+    sea = kind.kind_of_values(values) == kind.OPEN_SEA
+    note = open_sea.sea_memory_note() if sea else None
     notes += [note] if note else []
     if values["resolution"] > max_resolution():
         values["resolution"] = max_resolution()
@@ -143,7 +132,7 @@ def add_water(
             matrix = Matrix.LocRotScale(Vector(location), Euler(rotation), None)
         obj.matrix_world = matrix
         # The open sea's graded grid is its own (its even middle is the waves' cell): kept as it is.
-        if see_surroundings and not values["sea"] and surroundings.default_surroundings(obj, scene):
+        if see_surroundings and not sea and surroundings.default_surroundings(obj, scene):
             notes += _densify_for_surroundings(obj, values)
         material = dress_water(obj, scene, values)
         changes = surroundings.ensure_surroundings(obj, scene) if see_surroundings else []
@@ -157,11 +146,11 @@ def add_water(
 
 def _new_mesh(name, values):
     """The lake's even grid, or the open sea's grid that reaches the horizon."""
-    if values["sea"]:
+    if kind.kind_of_values(values) == kind.OPEN_SEA:
         values["shading"] = "ocean"
         wind = values["sea_wind_speed"]
-        reach = open_sea.FADE_END_TILES * open_sea.tile_size(wind)  # the waves' whole extent
-        return new_sea_mesh(name, values["size"], values["resolution"], open_sea.cell_size(wind), reach)
+        reach = sea_math.FADE_END_TILES * sea_math.tile_size(wind)  # the waves' whole extent
+        return new_sea_mesh(name, values["size"], values["resolution"], sea_math.cell_size(wind), reach)
     return new_water_mesh(name, values["size"], values["resolution"])
 
 
@@ -182,16 +171,15 @@ _KINDS = ("objects", "meshes", "materials", "node_groups", "images", "lightprobe
 
 
 def _snapshot(scene):
-    ids = {kind: {block.as_pointer() for block in getattr(bpy.data, kind)} for kind in _KINDS}
-    return ids, scene.world, scene.render.engine
+    ids = {data_kind: {b.as_pointer() for b in getattr(bpy.data, data_kind)} for data_kind in _KINDS}
+    return ids, scene_state.snapshot(scene)
 
 
 def _roll_back(scene, before):
-    """Removes every data-block made since `before` and puts the scene's world and engine back."""
-    ids, world, engine = before
-    for kind in _KINDS:
-        blocks = getattr(bpy.data, kind)
-        for block in [b for b in blocks if b.as_pointer() not in ids[kind]]:
+    """Removes every data-block made since `before` and puts every scene setting back."""
+    ids, settings = before
+    scene_state.restore(scene, settings)  # first: the world it may point back from is still there
+    for data_kind in _KINDS:
+        blocks = getattr(bpy.data, data_kind)
+        for block in [b for b in blocks if b.as_pointer() not in ids[data_kind]]:
             blocks.remove(block)
-    scene.world = world
-    scene.render.engine = engine

@@ -25,6 +25,7 @@ from ..nodes.material import (
 )
 from ..nodes.ocean_material import NORMAL_NODE, OCEAN_NODE, SKY_NODE, ocean_nodes
 from .editable import NotEditableError, check_editable, why_not_editable
+from .kind import LAKE, OCEAN, shading_of
 
 # Inputs the material drives: never kept or reset, driven again after a repair.
 _DRIVEN = {
@@ -71,13 +72,12 @@ def _group_problem(node, spec):
 
 
 def _parts(material):
-    """[(node, spec)] of the add-on's group nodes in `material` (lake or ocean), [] for others."""
-    node = water_node(material)
-    if node is not None:
-        return [(node, SPECS[water_surface.NAME])]
-    nodes = ocean_nodes(material)
-    if nodes is not None:
-        normal, shade = nodes
+    """[(node, spec)] of the add-on's group nodes in `material` (by its shading, `kind`), [] for others."""
+    shading = shading_of(material)
+    if shading == LAKE:
+        return [(water_node(material), SPECS[water_surface.NAME])]
+    if shading == OCEAN:
+        normal, shade = ocean_nodes(material)
         return [(normal, SPECS[ocean.NORMAL_NAME]), (shade, SPECS[ocean.SHADE_NAME])]
     return []
 

@@ -10,7 +10,7 @@ it, so there the lamp's highlight stays (see the README for the figure).
 
 import bpy
 
-from ..nodes.ownership import is_local, mark
+from ..nodes.ownership import is_local, is_original, mark
 
 OWNER_KEY = "water_surface_light_linking"  # marks a receiver collection the add-on made
 
@@ -73,7 +73,18 @@ def release_water(water, sun):
     if collection is None or collection.library is not None or _entry(collection, water) is None:
         return
     collection.objects.unlink(water)
-    if collection.get(OWNER_KEY) and not collection.objects and not collection.children:
+    if is_own_receivers(collection) and not collection.objects and not collection.children:
         sun.light_linking.receiver_collection = None
         if collection.users == 0:
             bpy.data.collections.remove(collection)
+
+
+def is_own_receivers(collection):
+    """Whether `collection` is a receiver collection the add-on made (not a user's copy of one)."""
+    return bool(collection.get(OWNER_KEY)) and is_original(collection)
+
+
+def release_everywhere(water):
+    """Takes `water` out of every light's receivers (an emptied one of ours goes with it)."""
+    for obj in [o for o in bpy.data.objects if o.type == "LIGHT"]:
+        release_water(water, obj)

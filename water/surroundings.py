@@ -48,9 +48,10 @@ from ..nodes import surroundings as spec
 from ..nodes.builder import ensure_group
 from ..nodes.ownership import is_local, is_original, mark, role_of
 from ..presets import schema
-from . import open_sea, plane
+from . import kind, open_sea
 from .editable import check_editable
 from .float_constraints import floating_on
+from .grid import max_resolution
 from .mirror import rest_bounds
 from .values import is_water
 from .waves import amplitude_sum, input_ids, input_property, set_wave_input, wave_modifier
@@ -123,9 +124,8 @@ def surroundings_collection(water):
 def needed_resolution(size):
     """Vertices per side for a grid of edge `size` whose spacing is at most GRID_SPACING, so the
     grid finds a waterline within that (513 at the default 128 m); capped by the memory."""
-    size = schema.clamp_values({"size": size})["size"]
     wanted = math.ceil(size / GRID_SPACING - 1e-9) + 1
-    return max(schema.RESOLUTION.min, min(wanted, schema.RESOLUTION.max, plane.max_resolution()))
+    return max(schema.RESOLUTION.min, min(wanted, schema.RESOLUTION.max, max_resolution()))
 
 
 def coarse_grid_note(water):
@@ -134,7 +134,7 @@ def coarse_grid_note(water):
     Points are added when water is added, never to an existing mesh, which may be the user's.
     The open sea's grid is graded out to the horizon, its middle spaced by the waves' cell: no note.
     """
-    if open_sea.is_open_sea(water):
+    if kind.kind_of(water) == kind.OPEN_SEA:
         return None
     low, high = rest_bounds(water)
     size = float(max(high[0] - low[0], high[1] - low[1]))
@@ -371,7 +371,7 @@ def _set_input(water, modifier, collection):
     return [f"sees '{collection.name}'" if collection is not None else "sees nothing"]
 
 
-def _remove_lost_caches():
+def remove_lost_caches():
     """Removes the add-on's caches whose water was deleted (no parent, read by no modifier);
     returns the changes."""
     read = {
@@ -424,7 +424,7 @@ def ensure_surroundings(water, scene, collection=None):
             changes.append(f"made collection '{collection.name}'")
         collection[WATER_KEY] = water.name
         changes += _fill(collection, water, scene)
-    changes += _remove_lost_caches()
+    changes += remove_lost_caches()
     cache, cache_modifier, cache_changes = _ensure_cache(water)
     modifier, modifier_changes = _ensure_modifier(water, cache)
     changes += cache_changes + modifier_changes + _set_input(water, cache_modifier, collection)

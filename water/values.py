@@ -5,16 +5,9 @@ ocean's `Water Ocean Shade`): one source of truth that the panel shows, presets 
 from ..nodes.material import water_node
 from ..nodes.ocean_material import ocean_nodes
 from ..presets import schema
+from .kind import LAKE, OCEAN, shading_of, water_material
 
-
-def water_material(obj):
-    """The first material of `obj` made by the add-on (lake or ocean shading), or None."""
-    if obj is None or obj.type != "MESH":
-        return None
-    for slot in obj.material_slots:
-        if water_node(slot.material) is not None or ocean_nodes(slot.material) is not None:
-            return slot.material
-    return None
+__all__ = ("is_water", "read_values", "water_material", "write_values")
 
 
 def is_water(obj):
@@ -33,11 +26,10 @@ def _shader_node(material):
     """The node holding the material's shader values: the lake's `Water Surface` node, or the
     ocean's `Water Ocean Shade` node (the keys it shares with the lake: the bump's scroll,
     absorption, foam, caustics); None for any other material."""
-    node = water_node(material)
-    if node is None:
-        nodes = ocean_nodes(material)
-        node = nodes[1] if nodes else None
-    return node
+    shading = shading_of(material)
+    if shading == LAKE:
+        return water_node(material)
+    return ocean_nodes(material)[1] if shading == OCEAN else None
 
 
 def read_values(material):
@@ -68,20 +60,30 @@ def read_values(material):
 
 
 def write_values(material, values):
-    """Sets the shader values among `values` (preset keys), clamped first.
+    """Sets the shader values among `values` (preset keys) from a script or the panel: their types
+    checked and clamped here, where they enter (PresetError names a key of the wrong type).
 
     The plane's keys are ignored; an ocean material takes the keys its shading shares with the
-    lake's (`_shader_node`).
-    Inputs the group lacks, or holds with another type, are skipped; returns the keys set.
+    lake's (`_shader_node`). Returns the keys set.
     """
     schema.check_types(values)  # a value of the wrong type: PresetError, before anything is set
+    shader_keys = {field.key for field in schema.SHADER_FIELDS}
+    return set_values(material, schema.clamp_values({k: v for k, v in values.items() if k in shader_keys}))
+
+
+def set_values(material, values):
+    """Sets shader values already checked and clamped (a preset's, or `add_water`'s resolved ones).
+
+    Inputs the group lacks, or holds with another type, are skipped; returns the keys set.
+    """
     node = _shader_node(material)
     if node is None:
         return []
     shader_keys = {field.key for field in schema.SHADER_FIELDS}
-    safe = schema.clamp_values({k: v for k, v in values.items() if k in shader_keys})
     written = []
-    for key, value in safe.items():
+    for key, value in values.items():
+        if key not in shader_keys:
+            continue
         field = schema.BY_KEY[key]
         socket = _socket(node, field)
         if socket is None:

@@ -1,0 +1,144 @@
+"""The add-on's Blender-free parts, tested without Blender: preset schema and store, the wave and
+sea maths, and the shape of the imports (no cycles, nothing in nodes/ reaching up into water/)."""
+
+import ast
+import json
+import math
+import sys
+from pathlib import Path
+
+import numpy as np
+import pytest
+from conftest import ROOT, load
+
+
+def test_these_modules_import_without_blender():
+    for name in ("presets", "presets.schema", "presets.store", "water.sea_math", "nodes.wave_math"):
+        load(name)
+    load("nodes")  # the group descriptions are data
+    assert "bpy" not in sys.modules
+
+
+def test_a_value_is_clamped_into_its_range_and_nan_refused_by_type(addon_module):
+    schema = addon_module("presets.schema")
+    values = schema.clamp_values({"size": 1e9, "wave_height": -5.0, "bump_layers": 99})
+    assert values["size"] == schema.SIZE.max
+    assert values["wave_height"] == schema.BY_KEY["wave_height"].min
+    assert values["bump_layers"] == schema.BY_KEY["bump_layers"].max
+    with pytest.raises(schema.PresetError, match="caustics"):
+        schema.check_types({"caustics": "2"})
+    with pytest.raises(schema.PresetError, match="caustics"):
+        schema.check_types({"caustics": None})
+    with pytest.raises(schema.PresetError, match="waves"):
+        schema.check_types({"waves": 1})
+    schema.check_types({"caustics": 2, "wind_direction": (0.6, 0.8)})
+
+
+def test_every_field_has_a_default_within_its_range_and_a_tooltip(addon_module):
+    schema = addon_module("presets.schema")
+    for field in schema.FIELDS:
+        assert field.tooltip and field.label
+        if field.kind in ("float", "int"):
+            assert field.min <= field.default <= field.max, field.key
+        elif field.kind in ("vec2", "color"):
+            assert all(field.min <= v <= field.max for v in field.default), field.key
+
+
+def test_the_built_in_presets_read_and_a_byte_order_mark_is_fine(addon_module, tmp_path):
+    store = addon_module("presets.store")
+    built_in, warnings = store.load_dir(store.BUILTIN_DIR)
+    assert warnings == []
+    ids = {preset.id for preset in built_in}
+    assert {"lake", "ocean", "open_sea", "clear_lake", "murky_pond"} <= ids
+    text = json.dumps({"name": "Marked", "values": {"wave_height": 0.5}})
+    (tmp_path / "marked.json").write_bytes(b"\xef\xbb\xbf" + text.encode())
+    user, warnings = store.load_dir(tmp_path, user=True)
+    assert warnings == [] and [p.name for p in user] == ["Marked"]
+    assert user[0].values["wave_height"] == 0.5
+
+
+def test_a_grown_seas_height_and_tile_follow_the_wind(addon_module):
+    sea = addon_module("water.sea_math")
+    for wind in (5.0, 10.0, 15.0):
+        for spectrum in sea.HEIGHT_STD_AT_SCALE_1:
+            hs = 4.0 * sea.wave_scale(wind, spectrum) * sea.HEIGHT_STD_AT_SCALE_1[spectrum]
+            assert hs == pytest.approx(0.21 * wind**2 / sea.GRAVITY, rel=1e-9)
+        peak = sea.peak_wavelength(wind)
+        assert peak == pytest.approx(2 * math.pi * wind**2 / 9.81, rel=1e-3)
+        tile = sea.tile_size(wind)
+        assert sea.MIN_TILE <= tile <= sea.MAX_TILE
+        assert tile >= min(sea.MAX_TILE, sea.TILE_WAVES * peak)
+    # The wind's direction (x, y) turns into the modifier's angle atan2(-y, x), for any direction.
+    for x, y in ((1, 0), (0.6, 0.8), (-0.6, 0.8), (-1, -1)):
+        angle = sea.wave_angle((x, y))
+        assert (math.cos(angle), -math.sin(angle)) == pytest.approx(np.array([x, y]) / math.hypot(x, y))
+    assert sea.ocean_resolution(available=10**12) == sea.RESOLUTIONS[0]
+    assert sea.ocean_resolution(available=1) == sea.RESOLUTIONS[-1]
+
+
+def test_the_four_sines_heights_and_normals_agree(addon_module):
+    wave_math = addon_module("nodes.wave_math")
+    rng = np.random.default_rng(3)
+    xy = rng.uniform(-20, 20, size=(64, 2))
+    step = 1e-4
+    h = wave_math.heights(xy, 1.7)
+    dx = (wave_math.heights(xy + [step, 0], 1.7) - h) / step
+    dy = (wave_math.heights(xy + [0, step], 1.7) - h) / step
+    expected = np.column_stack([-dx, -dy, np.ones(len(xy))])
+    expected /= np.linalg.norm(expected, axis=1, keepdims=True)
+    assert np.allclose(wave_math.normals(xy, 1.7), expected, atol=2e-3)
+
+
+def _imports():
+    """{module: set of the add-on's modules it imports}, read from the source."""
+    graph = {}
+    files = [p for p in ROOT.rglob("*.py") if not {"tests", "tools", "bench", "docs", "out"} & set(p.parts)]
+    for path in files:
+        relative = path.relative_to(ROOT).with_suffix("")
+        parts = list(relative.parts)
+        is_package = parts[-1] == "__init__"
+        if is_package:
+            parts = parts[:-1]
+        name = ".".join(parts)
+        here = parts if is_package else parts[:-1]
+        found = set()
+        for node in ast.walk(ast.parse(path.read_text(encoding="utf-8"))):
+            if isinstance(node, ast.ImportFrom) and node.level:
+                base = here[: len(here) - (node.level - 1)] if node.level > 1 else here
+                target = ".".join([*base, *(node.module.split(".") if node.module else [])])
+                for alias in node.names:
+                    candidate = f"{target}.{alias.name}".strip(".")
+                    found.add(candidate if (ROOT / Path(*candidate.split("."))).with_suffix(".py").exists()
+                              or (ROOT / Path(*candidate.split(".")) / "__init__.py").exists() else target)
+        graph[name] = {f for f in found if f and f != name}
+    return graph
+
+
+def test_no_module_of_nodes_imports_from_water_or_the_operators():
+    graph = _imports()
+    upward = {
+        (module, target)
+        for module, targets in graph.items()
+        if module.startswith("nodes")
+        for target in targets
+        if target.split(".")[0] in {"water", "operators", "ui", "cli", "api"}
+    }
+    assert upward == set()
+
+
+def test_the_add_ons_modules_import_each_other_without_a_cycle():
+    graph = _imports()
+    cycles = []
+
+    def visit(module, path):
+        if module in path:
+            cycles.append(path[path.index(module) :] + [module])
+            return
+        for target in graph.get(module, ()):
+            if target in graph and not target.endswith("__init__"):
+                visit(target, path + [module])
+
+    for start in sorted(graph):
+        if start:  # the root package chains the others: its own imports are the register order
+            visit(start, [])
+    assert cycles == []

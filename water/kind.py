@@ -1,0 +1,100 @@
+"""What a water is, and what it may do: the one place that decides.
+
+A water is an object whose material the add-on made. Its kind comes from the data: lake
+shading (the `Water Surface` group node) is a lake; ocean shading (the `Water Ocean Shade` and
+`Water Ocean Normal` nodes) is the seeds' ocean, or an open sea when Blender's Ocean modifier
+drives it (`open_sea.is_open_sea`). What each kind allows is the table `FEATURES`; the polls,
+the panel, the pipeline, the API, repair and the command line ask `allows` or `refusal` and
+nowhere else decides.
+"""
+
+from ..nodes.material import water_node
+from ..nodes.ocean_material import ocean_nodes
+from . import open_sea
+
+LAKE = "lake"
+OCEAN = "ocean"
+OPEN_SEA = "open_sea"
+KINDS = (LAKE, OCEAN, OPEN_SEA)
+
+# What each kind of water allows. The mirror set-up's probe and light linking, the sun and
+# bump choices, lake presets and Cycles' physical caustics are the lake shading's; every kind
+# has ray tracing, surroundings, the shader's caustics, floating objects and repair.
+FEATURES = {
+    LAKE: frozenset(
+        {"mirror", "ray_tracing", "waves", "surroundings", "caustics", "physical_caustics"}
+        | {"floating", "repair", "presets", "sun_choice", "bump_choice"}
+    ),
+    OCEAN: frozenset({"ray_tracing", "waves", "surroundings", "caustics", "floating", "repair"}),
+    OPEN_SEA: frozenset({"ray_tracing", "surroundings", "caustics", "floating", "repair", "whitecaps"}),
+}
+
+# Why a kind refuses a feature, in words for a poll message or an error.
+_WHY = {
+    "mirror": "it reflects the world's sky and needs no mirror probe",
+    "presets": "presets hold lake water values (edit it in the panel)",
+    "physical_caustics": "physical caustics are set up for lake water",
+    "sun_choice": "this choice is for lake water",
+    "bump_choice": "this choice is for lake water",
+    "waves": "its waves are Blender's Ocean modifier (set them in the panel)",
+    "whitecaps": "whitecaps are the open sea's",
+}
+_NAMES = {LAKE: "lake", OCEAN: "ocean shading", OPEN_SEA: "an open sea"}
+
+
+def shading_of(material):
+    """LAKE or OCEAN for a material the add-on made (its group nodes), else None."""
+    if material is None:
+        return None
+    if water_node(material) is not None:
+        return LAKE
+    return OCEAN if ocean_nodes(material) is not None else None
+
+
+def water_material(obj):
+    """The first material of `obj` made by the add-on (lake or ocean shading), or None."""
+    if obj is None or getattr(obj, "type", None) != "MESH":
+        return None
+    for slot in obj.material_slots:
+        if shading_of(slot.material) is not None:
+            return slot.material
+    return None
+
+
+def kind_of(obj):
+    """LAKE, OCEAN or OPEN_SEA for a water object, None for anything else."""
+    shading = shading_of(water_material(obj))
+    if shading == OCEAN and open_sea.is_open_sea(obj):
+        return OPEN_SEA
+    return shading
+
+
+def kind_of_values(values):
+    """The kind a water added from preset `values` will be."""
+    if values.get("sea"):
+        return OPEN_SEA
+    return OCEAN if values.get("shading", LAKE) == "ocean" else LAKE
+
+
+def preset_refusal(preset_name, values):
+    """Why a preset's `values` cannot be applied to an existing lake (they build their own mesh and
+    shading), one line, or None when they can."""
+    if kind_of_values(values) == LAKE:
+        return None
+    return f"'{preset_name}' builds its own mesh and shading: add it from Add > Mesh"
+
+
+def allows(obj, feature):
+    """Whether water `obj` has or may be given `feature` (a key of FEATURES' sets)."""
+    kind = kind_of(obj)
+    return kind is not None and feature in FEATURES[kind]
+
+
+def refusal(obj, feature, subject="The active object"):
+    """Why `obj` may not have `feature`, one line starting with `subject`, or None when it may."""
+    kind = kind_of(obj)
+    if kind is None:
+        return f"{subject} is not water (no Water Surface material)"
+    if feature in FEATURES[kind]:
+        return None
+    return f"{subject} is {_NAMES[kind]}: {_WHY.get(feature, f'{feature} is not for it')}"

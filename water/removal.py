@@ -1,0 +1,188 @@
+"""Removing a water, and everything the add-on made for it that nothing else uses.
+
+`remove_water` is Remove Water (operator, panel, API): it switches the water's Physical
+Caustics off, lets the objects floating on it go, takes its surroundings (sample modifier,
+cache, the add-on's collection), its mirror probe and its light linking off, lets go of the
+scene settings its mirror set-up changed (`ledger.py`: back only when unchanged since and
+needed by no other water), then removes the object, and its mesh and material when no one
+else uses them, and the add-on's groups, images and sky world that nothing uses any more.
+
+A water deleted the ordinary way (X, Delete) leaves its hidden cache and probe behind, and
+lives on in the sun's light-linking collection. `remove_leftovers` (run before every save)
+finds such waters by that mark and takes them apart as Remove Water does, so the next saved
+file holds none of it: the scene settings their set-up changed go back by the same rule.
+"""
+
+import bpy
+
+from ..nodes.material import water_node
+from ..nodes.ocean_material import ocean_nodes
+from ..nodes.ownership import is_original, role_of
+from . import ledger, mirror, physical_caustics, sun_link, surroundings
+from .editable import check_editable
+from .float_constraints import float_constraints, floating_on, forget
+from .values import water_material
+
+# The add-on's data kinds removed once nothing uses them (their marks say whose they are).
+_OWN_KINDS = ("node_groups", "images", "worlds", "lightprobes")
+
+
+class RemoveWaterError(ValueError):
+    """A water that cannot be removed (one line, says why)."""
+
+
+def _let_floaters_go(water):
+    """Removes the floating constraints of the objects floating on `water` (None: on no object any
+    more, their water deleted)."""
+    changes = []
+    for obj in bpy.data.objects:
+        if obj == water or obj.library is not None or not float_constraints(obj):
+            continue
+        if floating_on(obj) == water:
+            for constraint in float_constraints(obj):
+                obj.constraints.remove(constraint)
+            forget(obj)
+            changes.append(f"'{obj.name}' no longer floats")
+    return changes
+
+
+def water_node_or_ocean(material):
+    return material is not None and (water_node(material) is not None or ocean_nodes(material) is not None)
+
+
+def _remove_orphaned_water_data():
+    """Removes water meshes and materials that nothing uses any more (a deleted water's, once its
+    cache is gone): Blender would still save a material its unsaved mesh counts as a user."""
+    changes = []
+    for mesh in [m for m in bpy.data.meshes if m.users == 0 and m.library is None]:
+        if any(water_node_or_ocean(material) for material in mesh.materials):
+            bpy.data.meshes.remove(mesh)
+    for material in [m for m in bpy.data.materials if m.users == 0 and m.library is None]:
+        if water_node_or_ocean(material):
+            changes.append(f"removed material '{material.name}' (its water was deleted)")
+            bpy.data.materials.remove(material)
+    return changes
+
+
+def _remove_probe(water):
+    changes = []
+    probe = mirror.find_probe(water)
+    while probe is not None:
+        data = probe.data
+        changes.append(f"removed planar probe '{probe.name}'")
+        bpy.data.objects.remove(probe)
+        if data is not None and data.users == 0:
+            bpy.data.lightprobes.remove(data)
+        probe = mirror.find_probe(water)
+    return changes
+
+
+def _remove_unused_own_data():
+    """Removes the add-on's own groups, images, worlds and probe data nothing uses any more,
+    repeatedly (a group's removal frees the nested groups and images it used)."""
+    removed = []
+    while True:
+        found = [
+            (kind, block)
+            for kind in _OWN_KINDS
+            for block in getattr(bpy.data, kind)
+            if block.users == 0 and role_of(block) is not None and is_original(block)
+        ]
+        if not found:
+            return removed
+        for kind, block in found:
+            removed.append(block.name)
+            getattr(bpy.data, kind).remove(block)
+
+
+def _take_apart(water, scenes):
+    """Everything but the object and its data: what the add-on added around `water`."""
+    changes = []
+    for scene in scenes:
+        if physical_caustics.is_on(water):
+            changes += physical_caustics.disable(water, scene)
+    changes += _let_floaters_go(water)
+    changes += surroundings.remove_surroundings(water)
+    changes += _remove_probe(water)
+    material = water_material(water)
+    for scene in scenes:
+        changes += mirror.release_mirror(scene, water)
+    sun_link.release_everywhere(water)
+    return changes, material
+
+
+def _remove_object(water, material):
+    changes = []
+    mesh = water.data
+    name = water.name
+    bpy.data.objects.remove(water)
+    changes.append(f"removed '{name}'")
+    if mesh is not None and mesh.users == 0:
+        bpy.data.meshes.remove(mesh)
+    if material is not None and material.users == 0 and material.library is None:
+        bpy.data.materials.remove(material)
+    removed = _remove_unused_own_data()
+    if removed:
+        changes.append(f"removed the add-on's unused {', '.join(removed)}")
+    return changes
+
+
+def remove_water(water, scene=None):
+    """Removes `water` and everything the add-on made for it that nothing else uses; returns the
+    changes in words. RemoveWaterError for an object that is not water; NotEditableError for
+    linked or overridden water."""
+    if water is None or water_material(water) is None:
+        raise RemoveWaterError(f"'{getattr(water, 'name', water)}' is not a water object")
+    check_editable(water)
+    scenes = list(water.users_scene) or ([scene] if scene is not None else [])
+    changes, material = _take_apart(water, scenes)
+    return changes + _remove_object(water, material)
+
+
+def _deleted(obj):
+    """Whether `obj` is a water the user deleted: in no scene, kept alive only by the add-on's
+    light-linking collections or the constraints of what floated on it (no fake user, no
+    collection of the user's)."""
+    if obj.library is not None or obj.use_fake_user or obj.users_scene or water_material(obj) is None:
+        return False
+    return all(sun_link.is_own_receivers(c) for c in obj.users_collection)
+
+
+def remove_leftovers():
+    """Removes what the add-on made for waters the user deleted the ordinary way: the water kept
+    alive by light linking, its cache, probe and surroundings collection, and the caches and
+    probes whose water is gone; the scene settings set up for them go back as with Remove Water.
+    Returns the changes in words."""
+    changes = []
+    for water in [o for o in bpy.data.objects if _deleted(o)]:
+        scenes = [scene for scene in bpy.data.scenes if _held_by(scene, water)]
+        parts, material = _take_apart(water, scenes)
+        changes += parts + _remove_object(water, material)
+    changes += surroundings.remove_lost_caches()
+    changes += _remove_orphaned_water_data()
+    changes += _let_floaters_go(None)  # those whose water is gone altogether
+    for probe in [o for o in bpy.data.objects if mirror.is_lost_probe(o)]:
+        changes.append(f"removed planar probe '{probe.name}' (its water was deleted)")
+        data = probe.data
+        bpy.data.objects.remove(probe)
+        if data is not None and data.users == 0:
+            bpy.data.lightprobes.remove(data)
+    removed = _remove_unused_own_data()
+    if removed:
+        changes.append(f"removed the add-on's unused {', '.join(removed)}")
+    for kind in ("scenes", "objects", "lights", "materials"):
+        for block in getattr(bpy.data, kind):
+            if block.library is None and ledger.LEDGER_KEY in block:
+                ledger.prune(block, _holder_alive)
+    return changes
+
+
+def _held_by(scene, water):
+    """Whether `scene` has settings the add-on changed for `water` (its mirror set-up or caustics)."""
+    return any(ledger.held_paths(scene, f"{kind}:{water.name}") for kind in ("mirror", "caustics"))
+
+
+def _holder_alive(holder):
+    """Whether the water a ledger holder ("mirror:Water", "caustics:Water") names is still water."""
+    water = bpy.data.objects.get(holder.partition(":")[2])
+    return water is not None and water_material(water) is not None and not _deleted(water)
