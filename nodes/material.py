@@ -90,14 +90,14 @@ def water_node(material):
 def bump_image(material):
     """The normal map the material's water group samples."""
     node = water_node(material)
-    bump = node.node_tree.nodes.get("bump") if node is not None else None
+    bump = node.node_tree.nodes.get("bump") if node is not None and node.node_tree is not None else None
     return bump.image if bump is not None else None
 
 
 def foam_image(material):
     """The foam tile the material's water group samples (in its nested foam group), or None."""
     node = water_node(material)
-    foam = node.node_tree.nodes.get("foam") if node is not None else None
+    foam = node.node_tree.nodes.get("foam") if node is not None and node.node_tree is not None else None
     tile = foam.node_tree.nodes.get("tile") if foam is not None and foam.node_tree is not None else None
     return tile.image if tile is not None else None
 

@@ -120,11 +120,27 @@ def _build(combo):
         _api().float_on_water(boat, water)
         _api().float_on_water(buoy, water, tilt_damping=0.5)
     if combo["repair"]:
-        node = next(n for n in added.material.node_tree.nodes if n.type == "GROUP" and n.node_tree)
-        node.node_tree = None  # the user took the group away
-        assert harness.addon("water.repair").needs_repair(added.material)
-        harness.addon("water.repair").repair_water(added.material, scene)
+        _break_and_repair(added.material, scene)
     return scene, water
+
+
+def _break_and_repair(material, scene):
+    """The user gives the water a copy of its group with an input removed (one still at its
+    default, so the repaired water should look as before), then repairs it."""
+    node = next(n for n in material.node_tree.nodes if n.type == "GROUP" and n.node_tree)
+    tree = node.node_tree.copy()
+    node.node_tree = tree
+    defaults = {
+        item.name: item.default_value
+        for item in tree.interface.items_tree
+        if item.item_type == "SOCKET" and item.in_out == "INPUT" and item.socket_type == "NodeSocketFloat"
+    }
+    name = next(s.name for s in node.inputs if s.name in defaults and s.default_value == defaults[s.name])
+    tree.interface.remove(tree.interface.items_tree[name])
+    repair = harness.addon("water.repair")
+    assert repair.needs_repair(material)
+    repair.repair_water(material, scene)
+    assert repair.needs_repair(material) is None
 
 
 def _render_all(directory):
@@ -147,6 +163,7 @@ def composed(addon, tmp_path_factory):
 
     output, built = _blender_output(build_all)
     seen = {}  # the objects each water sees, by name (data-blocks go when the file is reopened)
+    values = {scene.name: _api().read_values(water) for scene, water in built}
     for scene, water in built:
         collection = harness.addon("water.surroundings").surroundings_collection(water)
         seen[scene.name] = [o.name for o in collection.all_objects] if collection is not None else []
@@ -163,7 +180,7 @@ def composed(addon, tmp_path_factory):
     finally:
         bpy.context.preferences.filepaths.use_scripts_auto_execute = True
         addon_utils.enable(harness.ADDON_MODULE, default_set=True)
-    return {"output": output, "before": before, "after": after, "seen": seen}
+    return {"output": output, "before": before, "after": after, "seen": seen, "values": values}
 
 
 def test_every_combination_is_built_and_rendered(composed):
@@ -190,3 +207,32 @@ def test_each_combination_renders_the_same_without_the_add_on(composed):
         assert np.isfinite(before).all() and np.isfinite(after).all(), name
         assert before[..., :3].max() > 0.0, f"{name} renders black"
         assert np.abs(after - before).max() < 1e-4, name
+
+
+def test_the_features_show_in_the_pictures(composed):
+    """The renders are of the scenes built (a control for the comparison above): a floating boat, the
+    bed seen through the water and the kinds of water each change the picture."""
+    before = composed["before"]
+
+    def differ(a, b):
+        return np.abs(before[a] - before[b]).max() > 0.02
+
+    assert differ("lake", "lake-floating")
+    assert differ("lake", "lake-surroundings")
+    assert differ("lake", "ocean-waves") and differ("ocean-waves", "open_sea")
+    distinct = {np.round(picture, 2).tobytes() for picture in before.values()}
+    assert len(distinct) >= 20
+
+
+def test_a_repaired_water_renders_as_it_did_before_it_broke(composed):
+    before = composed["before"]
+    repaired = [name for name in before if "-repair" in name]
+    assert len(repaired) == 40
+    # Another scene, other object names: Cycles' one sample lands differently on a few pixels
+    # (it hashes names), so the twin is compared on the whole picture, not pixel by pixel; with
+    # Physical Caustics, one sample of manifold caustics is all fireflies: their values compare.
+    for name in repaired:
+        twin = name.replace("-repair", "")
+        assert composed["values"][name] == composed["values"][twin], name
+        if "physical" not in name:
+            assert np.abs(before[name] - before[twin]).mean() < 0.01, name
