@@ -213,3 +213,19 @@ def test_a_removed_or_deleted_water_leaves_nothing_in_the_saved_file(scene, tmp_
         assert (tuple(sun.rotation_euler), sun.data.energy) == sun_before[:2]
         assert not sun.data.cycles.is_caustics_light
     assert sun.light_linking.receiver_collection is None
+
+
+def test_light_linking_the_add_on_made_stays_while_it_holds_the_users_own_links(scene):
+    sun = _sun(scene)
+    a = _api().add_water(scene, name="A", size=8, resolution=8, see_surroundings=False).object
+    b = _api().add_water(scene, name="B", size=8, resolution=8, see_surroundings=False).object
+    receivers = sun.light_linking.receiver_collection
+    assert receivers is not None and receivers.get("water_surface_version") is not None
+    lamp_post = harness.add_cube(scene, (9.0, 0.0, 1.0), name="Lamp Post")
+    receivers.objects.link(lamp_post)  # the user's own change in between
+    _api().remove_water(a, scene)
+    assert sun.light_linking.receiver_collection == receivers
+    assert sorted(o.name for o in receivers.objects) == ["B", "Lamp Post"]
+    _api().remove_water(b, scene)
+    assert sun.light_linking.receiver_collection == receivers  # it holds the user's link: kept
+    assert [o.name for o in receivers.objects] == ["Lamp Post"]

@@ -15,10 +15,8 @@ file holds none of it: the scene settings their set-up changed go back by the sa
 
 import bpy
 
-from ..nodes.material import water_node
-from ..nodes.ocean_material import ocean_nodes
 from ..nodes.ownership import is_original, role_of
-from . import ledger, mirror, physical_caustics, sun_link, surroundings
+from . import kind, ledger, mirror, physical_caustics, sun_link, surroundings
 from .editable import check_editable
 from .float_constraints import float_constraints, floating_on, forget
 from .values import water_material
@@ -46,19 +44,16 @@ def _let_floaters_go(water):
     return changes
 
 
-def water_node_or_ocean(material):
-    return material is not None and (water_node(material) is not None or ocean_nodes(material) is not None)
-
-
-def _remove_orphaned_water_data():
-    """Removes water meshes and materials that nothing uses any more (a deleted water's, once its
-    cache is gone): Blender would still save a material its unsaved mesh counts as a user."""
-    changes = []
-    for mesh in [m for m in bpy.data.meshes if m.users == 0 and m.library is None]:
-        if any(water_node_or_ocean(material) for material in mesh.materials):
-            bpy.data.meshes.remove(mesh)
-    for material in [m for m in bpy.data.materials if m.users == 0 and m.library is None]:
-        if water_node_or_ocean(material):
+def _remove_lost_caches():
+    """Removes the caches whose water was deleted, then the water's mesh they kept alive and its
+    water materials when nothing else uses them (Blender would still save a material that an
+    unsaved mesh counts as a user)."""
+    meshes = [cache.data for cache in surroundings.lost_caches() if cache.data is not None]
+    changes = surroundings.remove_lost_caches()
+    for mesh in [m for m in meshes if m.users == 0]:
+        materials = [m for m in mesh.materials if kind.shading_of(m) is not None]
+        bpy.data.meshes.remove(mesh)
+        for material in [m for m in materials if m.users == 0 and m.library is None]:
             changes.append(f"removed material '{material.name}' (its water was deleted)")
             bpy.data.materials.remove(material)
     return changes
@@ -83,16 +78,16 @@ def _remove_unused_own_data():
     removed = []
     while True:
         found = [
-            (kind, block)
-            for kind in _OWN_KINDS
-            for block in getattr(bpy.data, kind)
+            (data_kind, block)
+            for data_kind in _OWN_KINDS
+            for block in getattr(bpy.data, data_kind)
             if block.users == 0 and role_of(block) is not None and is_original(block)
         ]
         if not found:
             return removed
-        for kind, block in found:
+        for data_kind, block in found:
             removed.append(block.name)
-            getattr(bpy.data, kind).remove(block)
+            getattr(bpy.data, data_kind).remove(block)
 
 
 def _take_apart(water, scenes):
@@ -158,8 +153,7 @@ def remove_leftovers():
         scenes = [scene for scene in bpy.data.scenes if _held_by(scene, water)]
         parts, material = _take_apart(water, scenes)
         changes += parts + _remove_object(water, material)
-    changes += surroundings.remove_lost_caches()
-    changes += _remove_orphaned_water_data()
+    changes += _remove_lost_caches()
     changes += _let_floaters_go(None)  # those whose water is gone altogether
     for probe in [o for o in bpy.data.objects if mirror.is_lost_probe(o)]:
         changes.append(f"removed planar probe '{probe.name}' (its water was deleted)")
@@ -167,11 +161,11 @@ def remove_leftovers():
         bpy.data.objects.remove(probe)
         if data is not None and data.users == 0:
             bpy.data.lightprobes.remove(data)
-    removed = _remove_unused_own_data()
+    removed = _remove_unused_own_data() if changes else []  # only what those leftovers kept alive
     if removed:
         changes.append(f"removed the add-on's unused {', '.join(removed)}")
-    for kind in ("scenes", "objects", "lights", "materials"):
-        for block in getattr(bpy.data, kind):
+    for data_kind in ("scenes", "objects", "lights", "materials"):
+        for block in getattr(bpy.data, data_kind):
             if block.library is None and ledger.LEDGER_KEY in block:
                 ledger.prune(block, _holder_alive)
     return changes

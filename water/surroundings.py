@@ -371,9 +371,8 @@ def _set_input(water, modifier, collection):
     return [f"sees '{collection.name}'" if collection is not None else "sees nothing"]
 
 
-def remove_lost_caches():
-    """Removes the add-on's caches whose water was deleted (no parent, read by no modifier);
-    returns the changes."""
+def lost_caches():
+    """The add-on's caches whose water was deleted (no parent, read by no modifier)."""
     read = {
         _input(m, CACHE_INPUT)
         for o in bpy.data.objects
@@ -381,9 +380,14 @@ def remove_lost_caches():
         for m in o.modifiers
         if m.type == "NODES" and m.node_group is not None and role_of(m.node_group) == spec.SAMPLE_NAME
     }
-    lost = [
+    return [
         o for o in bpy.data.objects if is_cache(o) and is_original(o) and o.parent is None and o not in read
     ]
+
+
+def remove_lost_caches():
+    """Removes the add-on's caches whose water was deleted; returns the changes."""
+    lost = lost_caches()
     changes = [f"removed '{o.name}' (its water was deleted)" for o in lost]
     for obj in lost:
         bpy.data.objects.remove(obj)
