@@ -42,14 +42,37 @@ def run_blender_ext(*args):
     )
 
 
-def build_zip(out_dir):
-    """Builds the extension zip from the repository root into `out_dir`."""
+def build_zip(out_dir, name=None):
+    """Builds the extension zip from the repository root into `out_dir` (default name `water_surface.zip`)."""
     out_dir = Path(out_dir)
     out_dir.mkdir(parents=True, exist_ok=True)
-    zip_path = out_dir / f"{ADDON_ID}.zip"
+    zip_path = out_dir / (name or f"{ADDON_ID}.zip")
     proc = run_blender_ext("build", "--source-dir", str(ROOT), "--output-filepath", str(zip_path))
     if proc.returncode != 0 or not zip_path.exists():
         raise RuntimeError(f"extension build failed:\n{proc.stdout}\n{proc.stderr}")
+    return zip_path
+
+
+def manifest_version():
+    """The add-on's version, as `blender_manifest.toml` gives it."""
+    import tomllib
+
+    return tomllib.loads((ROOT / "blender_manifest.toml").read_text(encoding="utf-8"))["version"]
+
+
+def build_release(out_dir=None):
+    """Builds the zip users install (`tools/build`): `<out_dir>/water_surface-<version>.zip`, validated.
+
+    `out_dir` defaults to `dist/` in the repository. Blender's own `blender_ext.py build` makes it
+    (only the add-on's files, as the manifest's `[build]` section says), then `blender_ext.py
+    validate` checks the zip itself, as Blender does before installing it.
+    """
+    out_dir = Path(out_dir).resolve() if out_dir else ROOT / "dist"
+    zip_path = build_zip(out_dir, name=f"{ADDON_ID}-{manifest_version()}.zip")
+    proc = run_blender_ext("validate", str(zip_path))
+    if proc.returncode != 0:
+        zip_path.unlink()
+        raise RuntimeError(f"the built zip does not validate:\n{proc.stdout}\n{proc.stderr}")
     return zip_path
 
 
