@@ -114,12 +114,57 @@ def test_the_lake_combines_with_waves_and_the_panel_finds_their_inputs(scene, wa
     assert probe.data.influence_distance >= waves.amplitude_sum(modifier), "the mirror reaches the crests"
 
 
-def test_resolution_is_clamped_to_what_a_machine_can_hold(addon):
-    plane = harness.addon("water.plane")
+def _available_bytes():
+    with open("/proc/meminfo", encoding="ascii") as meminfo:
+        return next(int(line.split()[1]) * 1024 for line in meminfo if line.startswith("MemAvailable"))
+
+
+def _vertices_a_side(obj):
+    """The grid's distinct x and y coordinates, counted on its mesh."""
+    co = _rest(obj)
+    sides = tuple(len(np.unique(co[:, axis].round(5))) for axis in (0, 1))
+    assert sides[0] * sides[1] == len(co), "a full grid"
+    return sides
+
+
+def test_resolution_is_clamped_to_what_a_machine_can_hold(scene, monkeypatch):
+    """A grid of n x n points needs n^2 x BYTES_PER_VERTEX bytes, so the side is held to
+    sqrt(free memory / BYTES_PER_VERTEX) (and to the schema's 2..2048). This machine holds the
+    schema's 2048; a machine short of memory is made here by making each point cost more, so that
+    the free memory holds a grid of about 60 a side: asking for more gives at most that many
+    points a side (counted on the mesh), four times the cost per point halves the side, and a
+    request within the cap is given exactly."""
+    grid = harness.addon("water.grid")
+    api = harness.addon("api")
     schema = harness.addon("presets.schema")
     assert schema.clamp_values({"resolution": 10**9})["resolution"] == 2048
     assert schema.clamp_values({"resolution": -5})["resolution"] == 2
-    assert 2 <= plane.max_resolution() <= 2048
+    available = _available_bytes()
+    sides = {}
+    for cost in (1, 4):
+        monkeypatch.setattr(grid, "BYTES_PER_VERTEX", cost * available / 60**2)
+        cap = grid.max_resolution()
+        added = api.add_water(
+            scene,
+            resolution=10**9,
+            size=10.0,
+            mirror_setup=False,
+            see_surroundings=False,
+            name=f"Cost {cost}",
+        )
+        side = _vertices_a_side(added.object)
+        print(f"{cost} x the cost per point: cap {cap}, grid {side}, notes {added.notes}")
+        assert side[0] == side[1] <= cap
+        assert side[0] ** 2 * grid.BYTES_PER_VERTEX <= 1.05 * _available_bytes(), "it fits"
+        assert any("lowered" in note for note in added.notes)
+        sides[cost] = side[0]
+    assert 55 <= sides[1] <= 65
+    assert abs(sides[4] - sides[1] / 2) <= 2, "the side goes as the square root of the memory"
+    within = api.add_water(scene, resolution=20, size=10.0, mirror_setup=False, see_surroundings=False)
+    assert _vertices_a_side(within.object) == (20, 20) and within.notes == []
+    monkeypatch.setattr(grid, "BYTES_PER_VERTEX", 10.0 * available)
+    starved = api.add_water(scene, resolution=10**9, size=10.0, mirror_setup=False, see_surroundings=False)
+    assert _vertices_a_side(starved.object) == (2, 2), "never less than one quad"
 
 
 def test_the_add_operator_grid_has_the_asked_resolution_and_uvs(scene):
