@@ -1,7 +1,7 @@
 """Water Surface's Python API: the public surface for scripts, pipelines and pytest.
 
-The operators, the panel and the command line call these same functions, so a
-script gets the same water as a click. Import it through the add-on's module,
+These wrap the same `water/*` functions the operators, the panel and the command
+line call, so a script gets the same water as a click. Import it through the add-on's module,
 whatever extension repository it was installed into::
 
     import importlib, addon_utils
@@ -120,8 +120,9 @@ def kind_of(obj: bpy.types.Object | None) -> str | None:
 
 
 def setup_mirror(water: bpy.types.Object, scene: bpy.types.Scene | None = None) -> list[str]:
-    """Sets the scene up so lake `water` shows a true mirror; returns what changed, in words
-    (nothing for ocean shading, which reflects the world's sky)."""
+    """Sets the scene up so lake `water` shows a true mirror; returns what changed, in words.
+    Ocean shading reflects the world's sky: it gets only the render engine (from Workbench) and
+    EEVEE's ray tracing, no probe."""
     return _mirror.setup_mirror(scene or bpy.context.scene, water)
 
 

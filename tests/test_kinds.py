@@ -14,19 +14,33 @@ def _api():
 @pytest.fixture
 def waters(scene):
     lake = _api().add_water(scene, name="Lake", size=8, resolution=8, see_surroundings=False).object
-    ocean = _api().add_water(
-        scene, preset="ocean", name="Ocean", size=8, resolution=8, see_surroundings=False, location=(20, 0, 0)
-    ).object
-    sea = _api().add_water(
-        scene,
-        preset="open_sea",
-        name="Sea",
-        size=400,
-        resolution=24,
-        sea_wind_speed=3.0,
-        see_surroundings=False,
-        location=(0, 900, 0),
-    ).object
+    ocean = (
+        _api()
+        .add_water(
+            scene,
+            preset="ocean",
+            name="Ocean",
+            size=8,
+            resolution=8,
+            see_surroundings=False,
+            location=(20, 0, 0),
+        )
+        .object
+    )
+    sea = (
+        _api()
+        .add_water(
+            scene,
+            preset="open_sea",
+            name="Sea",
+            size=400,
+            resolution=24,
+            sea_wind_speed=3.0,
+            see_surroundings=False,
+            location=(0, 900, 0),
+        )
+        .object
+    )
     return {"lake": lake, "ocean": ocean, "open_sea": sea}
 
 

@@ -108,8 +108,12 @@ def _imports():
                 target = ".".join([*base, *(node.module.split(".") if node.module else [])])
                 for alias in node.names:
                     candidate = f"{target}.{alias.name}".strip(".")
-                    found.add(candidate if (ROOT / Path(*candidate.split("."))).with_suffix(".py").exists()
-                              or (ROOT / Path(*candidate.split(".")) / "__init__.py").exists() else target)
+                    found.add(
+                        candidate
+                        if (ROOT / Path(*candidate.split("."))).with_suffix(".py").exists()
+                        or (ROOT / Path(*candidate.split(".")) / "__init__.py").exists()
+                        else target
+                    )
         graph[name] = {f for f in found if f and f != name}
     return graph
 
