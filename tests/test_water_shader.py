@@ -1,4 +1,10 @@
-"""The `Water Surface` group renders the reference model: measured per pixel against numpy."""
+"""The `Water Surface` group renders the reference model: measured per pixel against numpy.
+
+The water is placed as a user would leave it, not as it is made: moved (up too), turned about Z
+by 30 degrees and scaled unevenly, with a wind along no axis. The models work from its transform:
+where the camera's rays meet its plane, which of those points lie on it, and its UVs and tangent
+frame there (the bump, its wind and the normal are in the water's own UV space).
+"""
 
 import math
 
@@ -13,7 +19,11 @@ pytestmark = pytest.mark.render
 
 SKY = (0.4, 0.6, 0.9)
 CAMERA_AT = (0.0, -6.0, 2.5)
-WATER_SIZE = 8.0
+WATER_SIZE = 8.0  # before scaling: UVs 0..1 across it
+WATER_AT = (0.6, -0.3, 0.2)
+WATER_TURN = math.radians(30.0)
+WATER_SCALE = (1.25, 0.8, 1.0)
+WIND = (-0.6, 0.8)  # in the water's UV space
 
 
 def _water_material():
@@ -28,10 +38,17 @@ def lake(addon, eevee):
     harness.set_world_color(scene, SKY)
     sun = bpy.data.objects.new("Sun", bpy.data.lights.new("Sun", "SUN"))
     scene.collection.objects.link(sun)
-    material = _water_material().make_water_material(scene=scene)
-    bpy.ops.mesh.primitive_plane_add(size=WATER_SIZE)
-    water = bpy.context.object
-    water.data.materials.append(material)
+    added = harness.addon("api").add_water(
+        scene,
+        size=WATER_SIZE,
+        wind_direction=WIND,
+        location=WATER_AT,
+        rotation=(0.0, 0.0, WATER_TURN),
+        mirror_setup=False,
+        see_surroundings=False,
+    )
+    water = added.object
+    water.scale = WATER_SCALE
     harness.add_cube(
         scene, (0, 0, -1.2), size=2.0, material=harness.emission_material("Floor", (1, 0.1, 0.05))
     )
@@ -41,8 +58,9 @@ def lake(addon, eevee):
     camera = harness.add_camera(scene, CAMERA_AT, (0, 0, 0))
     return {
         "scene": scene,
-        "material": material,
-        "node": _water_material().water_node(material),
+        "water": water,
+        "material": added.material,
+        "node": _water_material().water_node(added.material),
         "sun": sun,
         "camera": camera,
     }
@@ -76,6 +94,16 @@ def _aim_sun(sun, direction):
     bpy.context.view_layer.update()
 
 
+def _on_water(lake, camera=None):
+    """Where each pixel's ray meets the water's plane, (H, W, 3) world and the water's own
+    coordinates, and the mask of rays that reach it."""
+    origin, directions = harness.pixel_rays(lake["scene"], camera or lake["camera"])
+    hits, ok = harness.hit_plane_z(origin, directions, WATER_AT[2])
+    to_water = np.linalg.inv(np.array(lake["water"].matrix_world))
+    local = hits @ to_water[:3, :3].T + to_water[:3, 3]
+    return origin, hits, local, ok
+
+
 def _flat_water_mask(lake, render):
     """Pixels showing the water plane itself (not the block, not the sky), from the flat normal view."""
     node = lake["node"]
@@ -83,11 +111,14 @@ def _flat_water_mask(lake, render):
     node.inputs["Debug View"].default_value = 4
     normal = render(lake["scene"], "mask", exr=True)
     flat = np.all(np.abs(normal[..., :3] - (0.5, 0.5, 1.0)) < 0.01, axis=-1)
-    origin, directions = harness.pixel_rays(lake["scene"], lake["camera"])
-    hits, ok = harness.hit_plane_z(origin, directions)
-    inside = (
-        ok & (np.abs(hits[..., 0]) < WATER_SIZE / 2 - 0.3) & (np.abs(hits[..., 1]) < WATER_SIZE / 2 - 0.3)
-    )
+    origin, hits, local, ok = _on_water(lake)
+    # 0.4 m inside the water's edges (in world metres: the water is scaled), and a pixel from
+    # anything else: an edge pixel's filter blends in what lies beyond it.
+    margin = 0.4 / np.array(WATER_SCALE[:2])
+    inside = ok & (np.abs(local[..., :2]) < WATER_SIZE / 2 - margin).all(axis=-1)
+    for axis in (0, 1):
+        for shift in (1, -1):
+            flat = flat & np.roll(flat, shift, axis)
     return flat & inside, origin, hits
 
 
@@ -120,7 +151,7 @@ def test_glint_view_matches_the_formula_and_follows_the_sun(water, render):
     node.inputs["Specular Strength"].default_value = 2.0
     node.inputs["Debug View"].default_value = 5
     peaks = []
-    for target in ((0.0, 0.0, 0.0), (2.0, 1.5, 0.0)):
+    for target in ((0.0, 0.0, WATER_AT[2]), (2.0, 1.5, WATER_AT[2])):
         # Aim the sun so that its mirror image reaches the camera from `target`.
         eye = Vector(CAMERA_AT) - Vector(target)
         sun_dir = (eye.x, eye.y, -eye.z)
@@ -172,10 +203,11 @@ def test_two_frames_differ_only_with_wind(water, render):
     for wind in (0.02, 0.0):
         node.inputs["Wind Force"].default_value = wind
         frames = []
-        for frame in (1, 13):
+        for frame in (1, 25):
             scene.frame_set(frame)
             frames.append(render(scene, f"wind_{wind}_frame_{frame}", exr=True)[..., :3])
         differences[wind] = np.abs(frames[0] - frames[1])[mask].mean()
+    print(f"frames 1 and 25 differ by {differences[0.02]:.4f} with wind, {differences[0.0]:.5f} without")
     assert differences[0.02] > 0.01
     assert differences[0.0] < 0.1 * differences[0.02]
 
@@ -204,8 +236,10 @@ def test_group_renders_in_cycles(water, render):
     finally:
         scene.render.engine = eevee
     assert np.isfinite(pixels).all()
-    # Reflective: the green block's mirror image shows under it, in green.
-    ((col, row),) = harness.world_to_pixel(scene, water["camera"], [(1.5, 1.5, -0.4)])
+    # Reflective: the green block's mirror image shows under it, in green (a point 0.1 m above
+    # its foot, mirrored in the water's plane).
+    mirrored = (1.5, 1.5, 2.0 * WATER_AT[2] - 0.4)
+    ((col, row),) = harness.world_to_pixel(scene, water["camera"], [mirrored])
     patch = pixels[int(row) - 1 : int(row) + 2, int(col) - 1 : int(col) + 2, :3].mean(axis=(0, 1))
     assert patch[1] > 0.3 and patch[1] > 2 * patch[0]
 
@@ -226,3 +260,95 @@ def test_zero_wind_gives_finite_water_that_scrolls_along_y(water, render):
     assert normals[:, 2].mean() > 0.8 and normals[:, :2].std() > 0.05  # a real bump, not a flat colour
     # No wind falls back to the default +Y wind.
     assert np.abs(still - renders[(0.0, 1.0, 0.0)])[mask].mean() < 1e-3
+
+
+def _bilinear_mirror(image, uv):
+    """GPU-style bilinear sampling with mirrored-repeat addressing; `image` (H, W, 3), row 0 at v = 0."""
+    height, width = image.shape[:2]
+    x = uv[..., 0] * width - 0.5
+    y = uv[..., 1] * height - 0.5
+    x0, y0 = np.floor(x).astype(np.int64), np.floor(y).astype(np.int64)
+    fx, fy = (x - x0)[..., None], (y - y0)[..., None]
+
+    def mirror(index, size):
+        index = np.mod(index, 2 * size)
+        return np.where(index >= size, 2 * size - 1 - index, index)
+
+    xs = (mirror(x0, width), mirror(x0 + 1, width))
+    ys = (mirror(y0, height), mirror(y0 + 1, height))
+    top = image[ys[0], xs[0]] * (1 - fx) + image[ys[0], xs[1]] * fx
+    bottom = image[ys[1], xs[0]] * (1 - fx) + image[ys[1], xs[1]] * fx
+    return top * (1 - fy) + bottom * fy
+
+
+def _bump_colour(image, uv, seconds, wind=WIND, turn=WATER_TURN, wave_length=0.1, wind_force=0.02):
+    """numpy model of Debug View 4 (MODEL.md 1, steps 1-3, one layer, Bump Strength 1): the bump
+    read at the wind-frame UV, its slopes turned back onto the UV axes, then into the world
+    through the water's tangent frame: +u and +v are its X and Y axes, turned by `turn`."""
+    w = np.array(wind, float) / np.hypot(*wind)
+    p = np.array((w[1], -w[0]))
+    q = np.stack((uv @ p, uv @ w + seconds * wind_force), axis=-1) / wave_length
+    t = 2.0 * _bilinear_mirror(image, q) - 1.0
+    slope = t[..., :1] * p + t[..., 1:2] * w
+    tangent, bitangent = (
+        np.array((math.cos(turn), math.sin(turn))),
+        np.array((-math.sin(turn), math.cos(turn))),
+    )
+    xy = slope[..., :1] * tangent + slope[..., 1:2] * bitangent
+    n = np.concatenate((xy, t[..., 2:]), axis=-1)
+    n /= np.linalg.norm(n, axis=-1, keepdims=True)
+    return n * 0.5 + 0.5
+
+
+def test_the_bump_normal_is_read_in_the_placed_water_s_uvs_and_turned_with_it(water, render):
+    """A long lens looks straight down on 9 cm of the placed water (the bump magnified, so the
+    GPU reads its full-size image bilinearly, as numpy does): Debug View 4 is the model at the
+    water's UVs there, its wind and its turned tangent frame. Leaving out any part of the
+    placement, or the wind, is clearly worse. The patch lies in a tile read as it is, not
+    mirrored: the renderer here reads a mirrored tile one texel off the GL rule numpy follows
+    (a mean error of about 0.01 on its own; `test_bump_layers.py` covers the mirroring)."""
+    scene, node = water["scene"], water["node"]
+    at = (0.46, 0.7, WATER_AT[2])
+    close = harness.add_camera(scene, (at[0], at[1], at[2] + 1.0), at, lens=400.0)
+    close.rotation_euler = (0.0, 0.0, 0.0)
+    bpy.context.view_layer.update()
+    _origin, hits, local, ok = _on_water(water, close)
+    scene.render.filter_size, filter_size = 0.0, scene.render.filter_size
+    scene.frame_set(30)
+    seconds = 30 / (scene.render.fps / scene.render.fps_base)
+    node.inputs["Debug View"].default_value = 4
+    try:
+        pixels = render(scene, "bump_normal", exr=True)[..., :3]
+    finally:
+        scene.render.filter_size = filter_size
+        scene.camera = water["camera"]
+        bpy.data.objects.remove(close)
+    assert ok.all() and (np.abs(local[..., :2]) < WATER_SIZE / 2).all()
+    image = harness.addon("nodes.material").bump_image(water["material"])
+    texels = np.empty(image.size[0] * image.size[1] * 4, dtype=np.float32)
+    image.pixels.foreach_get(texels)
+    image = texels.reshape(image.size[1], image.size[0], 4)[..., :3].astype(np.float64)
+    uv = local[..., :2] / WATER_SIZE + 0.5
+    wind = np.array(WIND) / np.hypot(*WIND)
+    tiles = np.floor(np.stack((uv @ (wind[1], -wind[0]), uv @ wind + seconds * 0.02), axis=-1) / 0.1)
+    assert (tiles % 2 == 0).all(), "one tile, not mirrored"
+    model = _bump_colour(image, uv, seconds)
+    error = np.abs(pixels - model).mean()
+    assert pixels[..., :2].std() > 0.03, "a real bump fills the view"
+    # The same point's UV had the water not been moved, turned or scaled, or only not scaled.
+    to_water = np.array(water["water"].matrix_world.inverted())
+    unscaled = (hits - WATER_AT)[..., :2] @ np.array(
+        ((math.cos(WATER_TURN), -math.sin(WATER_TURN)), (math.sin(WATER_TURN), math.cos(WATER_TURN)))
+    )
+    wrong = {
+        "unplaced": _bump_colour(image, hits[..., :2] / WATER_SIZE + 0.5, seconds, turn=0.0),
+        "not scaled": _bump_colour(image, unscaled / WATER_SIZE + 0.5, seconds),
+        "normal not turned": _bump_colour(image, uv, seconds, turn=0.0),
+        "wind along +Y": _bump_colour(image, uv, seconds, wind=(0.0, 1.0)),
+        "wind in world axes": _bump_colour(image, uv, seconds, wind=to_water[:2, :2] @ np.array(WIND)),
+    }
+    errors = {what: float(np.abs(pixels - other).mean()) for what, other in wrong.items()}
+    print(f"mean error {error:.4f}; " + ", ".join(f"{what} {value:.4f}" for what, value in errors.items()))
+    assert error < 0.003, f"mean error {error:.4f}"
+    for what, value in errors.items():
+        assert value > 3 * error, what
