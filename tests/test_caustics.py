@@ -318,13 +318,6 @@ def test_cycles_shows_the_pattern_both_ways(pool, render):
     assert np.isfinite(mnee).all() and means["mnee"] > 0.5 * means["off"], "MNEE lights the bed"
 
 
-def test_presets_turn_caustics_on_where_the_issue_asks(addon):
-    presets = harness.addon("presets")
-    assert presets.get("lake").values["caustics"] == 0.0
-    assert presets.get("clear_lake").values["caustics"] > 0.0
-    assert presets.get("tropical_shallows").values["caustics"] > 0.0
-
-
 # The tile (numpy only).
 
 
@@ -386,18 +379,54 @@ def test_a_saved_file_renders_its_caustics_without_the_add_on(
 # Scenes of their own (after the pool's tests: a new scene removes the pool).
 
 
+# Four waters of the presets' 128 m meeting at the origin, over one bed 1 m down; the camera looks
+# straight down on the corner where they meet. Each quadrant (x, y signs) shows one of them.
+QUADRANTS = {
+    (1, 1): ("lake", {}),
+    (-1, 1): ("clear_lake", {}),
+    (-1, -1): ("tropical_shallows", {}),
+    (1, -1): ("lake", {"caustics": 1.0, "see_surroundings": False}),  # sees no bed
+}
+
+
 @pytest.mark.render
-def test_water_without_surroundings_has_no_caustics(scene, render):
-    _box(scene, "Bed", (-6.0, -6.0, -1.1), (6.0, 6.0, -1.0), _diffuse("White", (1, 1, 1)))
+def test_caustics_show_where_the_presets_and_the_surroundings_say(scene, render):
+    """Debug View 8 (the caustic factor on what is seen through the water), one render of four
+    waters added by the API over a bed 1 m down: `clear_lake` and `tropical_shallows` show the
+    pattern, the reference `lake` none (a factor of 1 everywhere), and a water with caustics on
+    but no surroundings none either: it does not know there is a bed to light."""
+    scene.eevee.taa_render_samples = 1
+    _box(scene, "Bed", (-130.0, -130.0, -1.1), (130.0, 130.0, -1.0), _diffuse("White", (1, 1, 1)))
     _sun(scene)
-    added = harness.addon("api").add_water(
-        scene, size=8.0, caustics=1.0, see_surroundings=False, mirror_setup=False
-    )
-    added.material.node_tree.nodes["Water Surface"].inputs["Debug View"].default_value = 8
-    harness.add_camera(scene, (0.0, -1.0, 10.0), (0.0, 0.0, 0.0))
-    pattern = render(scene, "pattern", exr=True)[..., :3]
-    middle = pattern[20:52, 40:88]
-    assert np.abs(middle - 1.0).max() < 0.01
+    for (sx, sy), (preset, values) in QUADRANTS.items():
+        values = {"mirror_setup": False, **values}
+        added = harness.addon("api").add_water(
+            scene,
+            preset=preset,
+            location=(sx * (LAKE / 2 + 0.1), sy * (LAKE / 2 + 0.1), 0.0),
+            name=preset,
+            **values,
+        )
+        added.material.node_tree.nodes["Water Surface"].inputs["Debug View"].default_value = 8
+    camera = harness.add_camera(scene, (0.0, 0.0, 4.0), (0.0, 0.0, 0.0))
+    camera.rotation_euler = (0.0, 0.0, 0.0)
+    bpy.context.view_layer.update()
+    pattern = render(scene, "pattern", exr=True)[..., :3].mean(axis=-1)
+    origin, directions = harness.pixel_rays(scene, camera)
+    hits, ok = harness.hit_plane_z(origin, directions, 0.0)
+    spread = {}
+    for (sx, sy), (preset, values) in QUADRANTS.items():
+        mask = ok & (sx * hits[..., 0] > 0.3) & (sy * hits[..., 1] > 0.3)
+        assert mask.sum() > 300
+        seen = pattern[mask]
+        spread[preset if not values else "caustics without surroundings"] = (
+            float(seen.std()),
+            float(np.abs(seen - 1.0).max()),
+        )
+    print({name: (round(std, 3), round(most, 3)) for name, (std, most) in spread.items()})
+    assert spread["clear_lake"][0] > 0.15 and spread["tropical_shallows"][0] > 0.15
+    assert spread["lake"][1] < 0.01
+    assert spread["caustics without surroundings"][1] < 0.01
 
 
 def test_physical_caustics_refuse_water_that_sees_nothing_or_has_no_sun(scene):
