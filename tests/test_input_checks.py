@@ -376,3 +376,12 @@ def test_check_types_is_the_schemas_one_rule(schema):
             schema.check_values(values)
     with pytest.raises(schema.PresetError, match="must be a dict"):
         schema.check_types([("caustics", 1)])
+
+
+@pytest.mark.parametrize("option", [{"frame": "2"}, {"samples": 2.5}, {"frames": [1, "3"]}, {"frame": True}])
+def test_render_file_from_a_script_refuses_a_number_of_the_wrong_type_in_one_line(tmp_path, addon, option):
+    files = harness.addon("water.files")
+    source = tmp_path / "none.blend"
+    with pytest.raises(files.FileJobError, match="whole numbers") as error:
+        files.render_file(str(source), str(tmp_path / "out.png"), **option)
+    assert "\n" not in str(error.value)

@@ -40,6 +40,7 @@ import re
 import shutil
 import stat
 import tempfile
+from numbers import Integral
 from pathlib import Path
 
 import bpy
@@ -309,6 +310,15 @@ def render_file(
     file_format = IMAGE_FORMATS.get(target.suffix.lower())
     if file_format is None:
         raise FileJobError(f"unknown image type '{target.suffix}' (use {', '.join(IMAGE_FORMATS)})")
+    numbers = {
+        "samples": [samples] if samples is not None else [],
+        "frame": [frame] if frame is not None else [],
+    }
+    numbers["frames"] = list(frames or [])
+    for name, given in numbers.items():
+        for value in [v for v in given if v is not None]:
+            if isinstance(value, bool) or not isinstance(value, Integral):
+                raise FileJobError(f"{name} must be whole numbers, not {shown(repr(value))}")
     if samples is not None and samples < 1:
         raise FileJobError(f"samples must be at least 1, not {samples}")
     for number in frames or ([frame] if frame is not None else []):
