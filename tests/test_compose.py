@@ -11,8 +11,6 @@ test reads its output throughout.
 """
 
 import itertools
-import os
-import tempfile
 
 import addon_utils
 import bpy
@@ -54,23 +52,6 @@ def _name(combo):
     flags = [k for k in ("waves", "surroundings", "physical", "floating", "repair") if combo[k]]
     flags += ["caustics"] if combo["caustics"] else []
     return "-".join([combo["kind"], *flags])
-
-
-def _blender_output(action):
-    """What Blender's C code prints on fd 1 and 2 while `action` runs; `action`'s result too."""
-    with tempfile.TemporaryFile(mode="w+b") as sink:
-        saved = [os.dup(1), os.dup(2)]
-        os.dup2(sink.fileno(), 1)
-        os.dup2(sink.fileno(), 2)
-        try:
-            result = action()
-        finally:
-            os.dup2(saved[0], 1)
-            os.dup2(saved[1], 2)
-            for fd in saved:
-                os.close(fd)
-        sink.seek(0)
-        return sink.read().decode(errors="replace"), result
 
 
 def _build(combo):
@@ -161,13 +142,13 @@ def composed(addon, tmp_path_factory):
     def build_all():
         return [_build(combo) for combo in COMBINATIONS]
 
-    output, built = _blender_output(build_all)
+    output, built = harness.blender_output(build_all)
     seen = {}  # the objects each water sees, by name (data-blocks go when the file is reopened)
     values = {scene.name: _api().read_values(water) for scene, water in built}
     for scene, water in built:
         collection = harness.addon("water.surroundings").surroundings_collection(water)
         seen[scene.name] = [o.name for o in collection.all_objects] if collection is not None else []
-    printed, before = _blender_output(lambda: _render_all(directory / "before"))
+    printed, before = harness.blender_output(lambda: _render_all(directory / "before"))
     output += printed
     path = directory / "composed.blend"
     bpy.ops.wm.save_as_mainfile(filepath=str(path))
@@ -175,7 +156,7 @@ def composed(addon, tmp_path_factory):
     bpy.context.preferences.filepaths.use_scripts_auto_execute = False
     try:
         bpy.ops.wm.open_mainfile(filepath=str(path))
-        printed, after = _blender_output(lambda: _render_all(directory / "after"))
+        printed, after = harness.blender_output(lambda: _render_all(directory / "after"))
         output += printed
     finally:
         bpy.context.preferences.filepaths.use_scripts_auto_execute = True

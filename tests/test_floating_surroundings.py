@@ -6,9 +6,6 @@ into the surroundings), then floated on it, made a dependency cycle
 when it builds such a graph: the tests read Blender's own output for it.
 """
 
-import os
-import tempfile
-
 import bpy
 import pytest
 
@@ -19,30 +16,13 @@ def _api():
     return harness.addon("api")
 
 
-def _blender_output(action):
-    """What Blender's C code prints (fd 1 and 2) while `action` runs."""
-    with tempfile.TemporaryFile(mode="w+b") as sink:
-        saved = [os.dup(1), os.dup(2)]
-        os.dup2(sink.fileno(), 1)
-        os.dup2(sink.fileno(), 2)
-        try:
-            action()
-        finally:
-            os.dup2(saved[0], 1)
-            os.dup2(saved[1], 2)
-            for fd in saved:
-                os.close(fd)
-        sink.seek(0)
-        return sink.read().decode(errors="replace")
-
-
 def _evaluate(scene):
     def run():
         bpy.context.view_layer.depsgraph.update()
         scene.frame_set(scene.frame_current + 1)
         scene.frame_set(scene.frame_current - 1)
 
-    return _blender_output(run)
+    return harness.blender_output(run)[0]
 
 
 @pytest.fixture

@@ -281,3 +281,24 @@ def hit_plane_z(origin, directions, z=0.0):
         t = (z - origin[2]) / directions[..., 2]
     hits = origin + t[..., None] * directions
     return hits, np.isfinite(t) & (t > 0)
+
+
+def blender_output(action):
+    """(what Blender's C code prints on fd 1 and 2 while `action` runs, `action`'s result): how a
+    test reads messages such as "Dependency cycle" that never reach Python."""
+    import os
+    import tempfile
+
+    with tempfile.TemporaryFile(mode="w+b") as sink:
+        saved = [os.dup(1), os.dup(2)]
+        os.dup2(sink.fileno(), 1)
+        os.dup2(sink.fileno(), 2)
+        try:
+            result = action()
+        finally:
+            os.dup2(saved[0], 1)
+            os.dup2(saved[1], 2)
+            for fd in saved:
+                os.close(fd)
+        sink.seek(0)
+        return sink.read().decode(errors="replace"), result

@@ -15,7 +15,6 @@ from . import open_sea
 LAKE = "lake"
 OCEAN = "ocean"
 OPEN_SEA = "open_sea"
-KINDS = (LAKE, OCEAN, OPEN_SEA)
 
 # What each kind of water allows. The mirror set-up's probe and light linking, the sun and
 # bump choices, lake presets and Cycles' physical caustics are the lake shading's; every kind

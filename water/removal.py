@@ -59,15 +59,21 @@ def _remove_lost_caches():
     return changes
 
 
+def _delete_probe(probe, why=""):
+    """Removes a mirror probe object, and its data when nothing else uses it."""
+    data = probe.data
+    change = f"removed planar probe '{probe.name}'{why}"
+    bpy.data.objects.remove(probe)
+    if data is not None and data.users == 0:
+        bpy.data.lightprobes.remove(data)
+    return change
+
+
 def _remove_probe(water):
     changes = []
     probe = mirror.find_probe(water)
     while probe is not None:
-        data = probe.data
-        changes.append(f"removed planar probe '{probe.name}'")
-        bpy.data.objects.remove(probe)
-        if data is not None and data.users == 0:
-            bpy.data.lightprobes.remove(data)
+        changes.append(_delete_probe(probe))
         probe = mirror.find_probe(water)
     return changes
 
@@ -156,11 +162,7 @@ def remove_leftovers():
     changes += _remove_lost_caches()
     changes += _let_floaters_go(None)  # those whose water is gone altogether
     for probe in [o for o in bpy.data.objects if mirror.is_lost_probe(o)]:
-        changes.append(f"removed planar probe '{probe.name}' (its water was deleted)")
-        data = probe.data
-        bpy.data.objects.remove(probe)
-        if data is not None and data.users == 0:
-            bpy.data.lightprobes.remove(data)
+        changes.append(_delete_probe(probe, " (its water was deleted)"))
     removed = _remove_unused_own_data() if changes else []  # only what those leftovers kept alive
     if removed:
         changes.append(f"removed the add-on's unused {', '.join(removed)}")

@@ -77,20 +77,3 @@ def restore(scene, before):
             scene[key] = value
             changed.append(f'["{key}"]')
     return changed
-
-
-def differences(scene, before):
-    """The settings that differ from `before`, for tests and reports: [(path, then, now)]."""
-    world, settings, props = before
-    found = [("world", world, scene.world)] if scene.world != world else []
-    after = snapshot(scene)[1]
-    for path, values in settings.items():
-        for name, value in values.items():
-            now = after.get(path, {}).get(name, value)
-            if now != value:
-                found.append((f"{path}.{name}", value, now))
-    now_props = _own_props(scene)
-    for key in sorted(set(props) | set(now_props)):
-        if props.get(key) != now_props.get(key):
-            found.append((f'["{key}"]', props.get(key), now_props.get(key)))
-    return found
