@@ -68,6 +68,7 @@ __all__ = (
     "setup_mirror",
     "stop_floating",
     "SurroundingsError",
+    "switch_part",
     "write_values",
 )
 
@@ -201,6 +202,22 @@ def write_values(water: bpy.types.Object, values: dict) -> None:
     if problem:
         raise MirrorSetupError(problem)
     _values.write_values(material, values)
+
+
+def switch_part(water: bpy.types.Object, part: str, on: bool = True) -> list[str]:
+    """Turns an optional part of a lake's shading on or off: "depth" (colour by depth), "foam"
+    (shore foam) or "caustics". A part that is off is not in the shader at all, so it costs
+    nothing; `write_values` does the same when a switch (Absorption, Foam Amount, Caustics) crosses
+    0. Returns what it did, in words.
+
+    ValueError for another word or a water without lake shading; NotEditableError for linked water.
+    """
+    material = _values.water_material(water)
+    check_editable(water, material)
+    problem = needs_repair(material) if material is not None else None
+    if problem:
+        raise MirrorSetupError(problem)
+    return _values.switch_part(material, part, on)
 
 
 def preset_ids() -> list[str]:

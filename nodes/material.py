@@ -4,42 +4,159 @@ What animates goes through simple-expression drivers (no Python runs), so a
 saved file renders with auto-run scripts off and without the add-on.
 """
 
+import re
+
 import bpy
 
 from . import SPECS, water_surface
 from .builder import ensure_group
 from .bump_image import ensure_bump_image
 from .foam_image import ensure_foam_image
-from .ownership import is_local
+from .ownership import VERSION_KEY, is_local, is_original, mark, role_of
 
 WATER_NODE = "Water Surface"
 TIME_EXPRESSION = "frame / (fps / fps_base)"
 
 
-def water_group(image=None):
-    """The `Water Surface` group sampling `image` (default: the add-on's bump image).
+def water_group(image=None, parts=()):
+    """The `Water Surface` group sampling `image` (default: the add-on's bump image), with the
+    optional parts named in `parts` (`water_surface.PARTS`: "depth", "foam", "caustics") built in.
 
     A shader group cannot take an image as an input, so a material with its own
     normal map uses a group of its own, named "Water Surface (<image>)", built
     from the same description and reused for every material with that image.
     It is found by the image it samples, so renaming the image changes nothing.
+    Each set of parts is a variant of its own, "Water Surface + Foam + Caustics", with the same
+    inputs in the same order: a material changes variant without losing a value or a driver.
     The foam tile (`foam_image.py`) is the add-on's own in every such group: it is sampled
     in the nested `Water Surface Foam Coverage` group, made again when lost.
     """
+    retire_legacy_groups()
+    spec = water_surface.spec_with(parts)
     default = ensure_bump_image()
-    foam = ensure_foam_image()
+    foam = ensure_foam_image() if "foam" in parts else None
     if image is None or image == default:
-        return ensure_group(SPECS[water_surface.NAME], SPECS, image=default, foam=foam)
+        return ensure_group(spec, SPECS, image=default, foam=foam)
     if image.colorspace_settings.name != "Non-Color" and is_local(image):
         image.colorspace_settings.name = "Non-Color"
-    return ensure_group(
-        SPECS[water_surface.NAME], SPECS, name=f"{water_surface.NAME} ({image.name})", image=image, foam=foam
+    return ensure_group(spec, SPECS, name=f"{spec.name} ({image.name})", image=image, foam=foam)
+
+
+def retire_legacy_groups():
+    """Gives the `Water Surface` groups of files saved before the parts were optional (version 4
+    and older: every part built in) the role and name of the variant with every part, so the
+    lean group takes their old name and their materials render as they did."""
+    full = water_surface.spec_with(water_surface.ALL_PARTS).name
+    for tree in bpy.data.node_groups:
+        version = tree.get(VERSION_KEY)
+        if role_of(tree) != water_surface.NAME or not isinstance(version, int) or version >= 5:
+            continue
+        if not is_original(tree):
+            continue
+        # "Water Surface (image).001" becomes "<full> (image)": the image's part of the name stays.
+        rest = tree.name[len(water_surface.NAME) :] if tree.name.startswith(water_surface.NAME) else ""
+        rest = re.sub(r"\.\d{3,}$", "", rest)
+        tree.name = full + (rest if rest.startswith(" (") else "")
+        mark(tree, full, version)
+
+
+def parts_built(tree):
+    """The optional parts built into a `Water Surface` group (all of them in a group it cannot
+    tell: a legacy one, or one without the parts' nodes)."""
+    if tree is None:
+        return frozenset()
+    return frozenset(
+        part.name
+        for part in water_surface.PARTS
+        if water_surface.FULL_SPEC.part_nodes(part.name)[0] in tree.nodes
     )
 
 
+def parts_wanted(material, node=None):
+    """The optional parts `material`'s water values turn on: a switch above 0, or one whose value
+    may change (linked, animated or driven), is on."""
+    node = node or water_node(material)
+    moving = _moving_inputs(material, node)
+    wanted = set()
+    for part in water_surface.PARTS:
+        socket = node.inputs.get(part.switch)
+        if socket is None or not hasattr(socket, "default_value"):
+            continue
+        value = socket.default_value
+        channels = tuple(value)[:3] if hasattr(value, "__len__") else (value,)
+        if socket.is_linked or part.switch in moving or max(channels) > 0.0:
+            wanted.add(part.name)
+    return frozenset(wanted)
+
+
+def _moving_inputs(material, node):
+    """Names of `node`'s inputs that a driver or an animation changes."""
+    animation = material.node_tree.animation_data
+    if animation is None:
+        return set()
+    prefix = f'nodes["{bpy.utils.escape_identifier(node.name)}"].inputs['
+    names = set()
+    for fcurve in (*animation.drivers, *_action_fcurves(animation.action)):
+        path = fcurve.data_path
+        if path.startswith(prefix) and path.endswith("].default_value"):
+            index = path[len(prefix) : -len("].default_value")]
+            if index.isdigit() and int(index) < len(node.inputs):
+                names.add(node.inputs[int(index)].name)
+            elif index.startswith('"'):
+                names.add(index.strip('"'))
+    return names
+
+
+def _action_fcurves(action):
+    """The F-curves of an action: in its layers' channel bags (slotted actions, 4.4 and later),
+    else in the action itself."""
+    if action is None:
+        return []
+    layers = getattr(action, "layers", None)
+    if layers:
+        return [
+            fc
+            for layer in layers
+            for strip in layer.strips
+            for bag in strip.channelbags
+            for fc in bag.fcurves
+        ]
+    return list(getattr(action, "fcurves", ()))
+
+
+def fit_parts(material):
+    """Swaps `material`'s water group for the variant with the parts its values turn on
+    (`parts_wanted`), keeping every value; returns whether it changed. A group that is not the
+    add-on's own, lacks inputs (needs repair) or is library data is left as it is."""
+    node = water_node(material)
+    if node is None or node.node_tree is None or not is_local(material):
+        return False
+    tree = node.node_tree
+    if role_of(tree) is None or not is_original(tree):
+        return False
+    if [socket.name for socket in node.inputs] != [socket.name for socket in water_surface.SPEC.inputs]:
+        return False
+    wanted = parts_wanted(material, node)
+    if parts_built(tree) == wanted:
+        return False
+    kept = {s.name: _copy(s.default_value) for s in node.inputs if hasattr(s, "default_value")}
+    node.node_tree = water_group(bump_image(material), wanted)
+    for socket in node.inputs:
+        if socket.name in kept:
+            socket.default_value = kept[socket.name]
+    if tree.users == 0 and tree.use_fake_user is False:
+        bpy.data.node_groups.remove(tree)  # ours, and no material uses it any more
+    return True
+
+
+def _copy(value):
+    return tuple(value) if hasattr(value, "__len__") and not isinstance(value, str) else value
+
+
 def make_water_material(name="Water", scene=None, image=None, sun=None):
-    """A new water material. `image` is a tangent-space normal map (default: the packed
-    water bump); `sun` a sun light object for the glint (default: the scene's first sun)."""
+    """A new water material, no optional part built in (`set_values` adds them as its values
+    ask). `image` is a tangent-space normal map (default: the packed water bump); `sun` a sun light
+    object for the glint (default: the scene's first sun)."""
     scene = scene or bpy.context.scene
     group = water_group(image)
     material = new_node_material(name)
@@ -103,8 +220,10 @@ def foam_image(material):
 
 
 def set_bump_image(material, image):
-    """Makes the material sample `image` (None: the default bump); its values stay as they were."""
-    water_node(material).node_tree = water_group(image)
+    """Makes the material sample `image` (None: the default bump); its values and parts stay as
+    they were."""
+    node = water_node(material)
+    node.node_tree = water_group(image, parts_built(node.node_tree))
 
 
 def drive_socket(socket, index, expression, variables):

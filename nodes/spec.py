@@ -9,7 +9,7 @@ two "Value" inputs), by position: "node:#1". The group's own input and output
 nodes are "input" and "output".
 """
 
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 
 # Stands for the image a group is built with (`ensure_group(..., image=...)`), in node props.
 BUMP_IMAGE = "<bump image>"
@@ -47,6 +47,24 @@ class Node:
     # Links to a node that is not built are not made either.
     since: tuple | None = None
     before: tuple | None = None
+    part: str | None = None  # the optional `Part` it belongs to (None: every variant has it)
+
+
+@dataclass(frozen=True)
+class Part:
+    """An optional part of a group (depth colour, foam, caustics): its nodes are built only into
+    the variants that have it (`GroupSpec.variant`), so a part that is off costs nothing at render
+    time. A shader input cannot switch code off: a part whose strength is 0 is still computed.
+    """
+
+    name: str  # what its nodes carry in `Node.part`, and the API's word for it
+    label: str  # in a variant's name ("Water Surface + Caustics") and the panel
+    switch: str  # the group input that turns it on: on while above 0 (any channel of a colour)
+    on_value: object  # the switch's value when the panel turns the part on from 0
+    # Without it, what its outputs stood for: {node key: {input: value}} on the nodes they fed ...
+    off_values: dict = field(default_factory=dict)
+    # ... and the links that take the place of its nodes (around a closure it adds).
+    off_links: tuple = ()
 
 
 @dataclass(frozen=True)
@@ -61,6 +79,32 @@ class GroupSpec:
     tree_type: str = "ShaderNodeTree"
     # Specs of nested groups this description carries itself (found before the shared `SPECS`).
     includes: tuple = ()
+    parts: tuple = ()  # its optional `Part`s; `variant` builds the description with some of them
+
+    def variant(self, on):
+        """This description with only the parts named in `on` (the others' nodes and links gone,
+        their off values and links in place), named after them: "Water Surface" with none,
+        "Water Surface + Depth + Caustics" with two."""
+        on = frozenset(on)
+        unknown = on - {part.name for part in self.parts}
+        if unknown:
+            raise ValueError(f"'{self.name}' has no part {', '.join(sorted(unknown))}")
+        off = [part for part in self.parts if part.name not in on]
+        dropped = {part.name for part in off}
+        nodes = {key: node for key, node in self.nodes.items() if node.part not in dropped}
+        for part in off:
+            for key, values in part.off_values.items():
+                nodes[key] = replace(nodes[key], values={**nodes[key].values, **values})
+        kept = {*nodes, "input", "output"}
+        links = tuple(
+            link for link in self.links if all(end.partition(":")[0] in kept for end in link)
+        ) + tuple(link for part in off for link in part.off_links)
+        name = self.name + "".join(f" + {part.label}" for part in self.parts if part.name in on)
+        return replace(self, name=name, nodes=nodes, links=links)
+
+    def part_nodes(self, name):
+        """Keys of the nodes of the part `name`."""
+        return [key for key, node in self.nodes.items() if node.part == name]
 
     def nested_groups(self):
         """Names of the groups this one uses, which must be built first."""

@@ -53,6 +53,7 @@ picture stays the composition of the views; 6 shows `T` and 7 the foam coverage,
 """
 
 import math as _math
+from dataclasses import replace as _replace
 
 from . import bump_uv, caustics, foam_map, wind_frame
 from .spec import (
@@ -60,6 +61,7 @@ from .spec import (
     FOAM_IMAGE,
     GroupSpec,
     Node,
+    Part,
     Socket,
     attribute,
     group_node,
@@ -69,7 +71,7 @@ from .spec import (
 )
 
 NAME = "Water Surface"
-VERSION = 4  # 4: caustics
+VERSION = 5  # 4: caustics; 5: depth colour, foam and caustics only in the variants that use them
 LIT_FOAM_SINCE = (4, 5, 0)  # the first LTS whose EEVEE keeps traced refraction beside a diffuse closure
 MAX_BUMP_LAYERS = 4
 FOAM_NAME = "Water Surface Foam Coverage"
@@ -473,11 +475,49 @@ FOAM_SPEC = GroupSpec(
     ),
 )
 
+# The optional parts: each is built only into the variants of the group that use it (the
+# material's group is swapped when its switch crosses 0: `material.fit_parts`), so a lake with
+# Caustics, Foam Amount and Absorption at 0 (the default) computes none of them.
+PARTS = (
+    Part(
+        "depth",
+        "Depth",
+        "Absorption",
+        (0.45, 0.09, 0.06),
+        off_values={
+            "through": {0: (1.0, 1.0, 1.0)},
+            "e_scatter": {0: (0.0, 0.0, 0.0)},
+            "e_transmit": {0: (1.0, 1.0, 1.0)},
+        },
+    ),
+    Part(
+        "foam",
+        "Foam",
+        "Foam Amount",
+        0.5,
+        off_values={"foam_clear": {1: 0.0}, "foam_weight": {1: 0.0}, "e_foam": {0: (0.0, 0.0, 0.0)}},
+        off_links=(("final:Shader", "output:Shader"),),
+    ),
+    Part(
+        "caustics",
+        "Caustics",
+        "Caustics",
+        1.0,
+        off_values={"through": {1: (1.0, 1.0, 1.0)}, "e_caustics": {0: (1.0, 1.0, 1.0)}},
+    ),
+)
+ALL_PARTS = frozenset(part.name for part in PARTS)
+
+
+def _in_part(name, nodes):
+    return {key: _replace(node, part=name) for key, node in nodes.items()}
+
+
 _LAYER_NODES, _LAYER_LINKS = _layer_nodes()
 _WEIGHT_NODES, _WEIGHT_LINKS = _weight_nodes()
 _DEPTH_NODES, _DEPTH_LINKS = _depth_nodes()
 
-SPEC = GroupSpec(
+FULL_SPEC = GroupSpec(
     name=NAME,
     version=VERSION,
     description="Lake water: bump, Fresnel blend of reflection and refraction, dull tint, sun glint, "
@@ -527,11 +567,11 @@ SPEC = GroupSpec(
         "glint_pow": math("POWER", 19, "pow(, Specular Power)"),
         "glint": math("MULTIPLY", 20, "* Specular Strength"),
         "glint_color": vmath("SCALE", 21, "* Sun Color"),
-        **_DEPTH_NODES,
+        **_in_part("depth", _DEPTH_NODES),
         # Shore foam: its coverage, read at the bump's scrolled UV (so it drifts with the wind).
-        "foam": group_node(FOAM_NAME, 13, "foam coverage c"),
+        "foam": _replace(group_node(FOAM_NAME, 13, "foam coverage c"), part="foam"),
         # Caustics: the factor on what the refraction shows (`caustics.py`).
-        "caustics": group_node(caustics.NAME, 13, "caustic factor"),
+        "caustics": _replace(group_node(caustics.NAME, 13, "caustic factor"), part="caustics"),
         **_WEIGHT_NODES,
         # The closures, weighted, the one emission and the foam.
         "glossy": Node(
@@ -558,6 +598,7 @@ SPEC = GroupSpec(
             values={"Roughness": 0.0},
             label="foam: white, lit",
             since=LIT_FOAM_SINCE,
+            part="foam",
         ),
         "foam_glow": Node(
             "ShaderNodeVectorMath",
@@ -568,9 +609,10 @@ SPEC = GroupSpec(
         ),
         "closures": Node("ShaderNodeAddShader", 27, label="reflection + refraction"),
         "final": Node("ShaderNodeAddShader", 28, label="+ emission"),
-        "with_foam": Node("ShaderNodeAddShader", 29, label="+ foam"),
+        "with_foam": Node("ShaderNodeAddShader", 29, label="+ foam", part="foam"),
     },
     includes=(FOAM_SPEC,),
+    parts=PARTS,
     links=(
         *pass_inputs("bump_uv", BUMP_UV_INPUTS),
         ("bump_uv:Vector", "bump:Vector"),
@@ -647,3 +689,12 @@ SPEC = GroupSpec(
         ("with_foam:Shader", "output:Shader"),
     ),
 )
+
+# The group every lake starts with (no part on): the one in `SPECS`, and the role old files'
+# `Water Surface` groups had (`material.retire_legacy_groups`).
+SPEC = FULL_SPEC.variant(())
+
+
+def spec_with(parts):
+    """The description of the lake group with the parts named in `parts` (`PARTS`) built in."""
+    return FULL_SPEC.variant(parts)

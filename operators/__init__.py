@@ -7,6 +7,7 @@ from .caustics_ops import OBJECT_OT_water_physical_caustics
 from .float_ops import OBJECT_OT_water_float, OBJECT_OT_water_float_stop
 from .link_ops import OBJECT_OT_water_surface_bump_set, OBJECT_OT_water_surface_sun_set
 from .mirror_setup import OBJECT_OT_water_mirror_setup
+from .part_ops import OBJECT_OT_water_part_switch
 from .preset_ops import (
     OBJECT_OT_water_surface_preset_add,
     OBJECT_OT_water_surface_preset_apply,
@@ -29,6 +30,7 @@ classes = (
     OBJECT_OT_water_surface_repair,
     OBJECT_OT_water_surroundings_set,
     OBJECT_OT_water_physical_caustics,
+    OBJECT_OT_water_part_switch,
     OBJECT_OT_water_float,
     OBJECT_OT_water_float_stop,
     OBJECT_OT_water_remove,

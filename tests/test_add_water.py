@@ -80,11 +80,12 @@ def test_adding_water_three_times_reuses_the_group_and_the_bump_image(scene):
     assert len(waters) == 3
     assert len({o.active_material.name for o in waters}) == 3, "each water has its own values"
     groups = sorted(g.name for g in bpy.data.node_groups)
-    lake = ["Water Surface", "Water Surface Bump UV", "Water Surface Caustics", "Water Surface Foam Coverage"]
-    lake += ["Water Surface Wind Frame", "Water Surroundings", "Water Surroundings Sample"]
+    # The default lake has no optional part (depth, foam, caustics) in its shader: no group or
+    # tile of theirs is made.
+    lake = ["Water Surface", "Water Surface Bump UV", "Water Surface Wind Frame"]
+    lake += ["Water Surroundings", "Water Surroundings Sample"]
     assert groups == lake, "each group once, no .001 (each water has its surroundings)"
-    images = sorted(i.name for i in bpy.data.images)
-    assert images == ["Water Surface Bump", "Water Surface Caustics", "Water Surface Foam"]
+    assert sorted(i.name for i in bpy.data.images) == ["Water Surface Bump"]
 
 
 def test_undo_removes_the_water_and_its_set_up(scene):
@@ -170,7 +171,13 @@ def test_panel_sections_name_real_group_inputs(addon):
     panel = harness.addon("ui.panel")
     inputs = {s.name for s in harness.addon("nodes.water_surface").INPUTS}
     for _title, _icon, names in panel._SECTIONS:
-        assert set(names) <= inputs
+        for name in names:
+            if name.startswith("part:"):
+                part = name[len("part:") :]
+                assert part in {p.name for p in harness.addon("nodes.water_surface").PARTS}
+                assert set(panel._PARTS[part][1]) <= inputs
+            else:
+                assert name in inputs
 
 
 def test_user_presets_are_saved_outside_the_add_on_applied_and_removed(scene):

@@ -6,7 +6,7 @@ the node is the one source of truth, so what the `.blend` holds is what shows.
 
 import bpy
 
-from ..nodes.material import bump_image, glint_sun, water_node
+from ..nodes.material import bump_image, glint_sun, parts_built, water_node
 from ..nodes.ocean_material import ocean_nodes
 from ..nodes.water_surface import DEBUG_VIEWS
 from ..nodes.water_waves import WAVE_COUNT
@@ -43,9 +43,16 @@ _SECTIONS = (
     ("Wind", "FORCE_WIND", ("Wind Direction", "Wind Force")),
     ("Tint", "COLOR", ("Dull Color", "Dull Blend")),
     ("Glint", "LIGHT_SUN", ("Specular Power", "Specular Strength")),
-    ("Surroundings", "OUTLINER_COLLECTION", ("Absorption", "Scatter Color", "Foam Width", "Foam Amount")),
-    ("Caustics", "LIGHT_SUN", ("Caustics", "Caustics Scale")),
+    ("Surroundings", "OUTLINER_COLLECTION", ("part:depth", "part:foam")),
+    ("Caustics", "LIGHT_SUN", ("part:caustics",)),
 )
+# The optional parts of the lake shading (`water_surface.PARTS`): a switch, then their inputs
+# while they are in the shader.
+_PARTS = {
+    "depth": ("Depth Colour", ("Absorption", "Scatter Color")),
+    "foam": ("Shore Foam", ("Foam Width", "Foam Amount")),
+    "caustics": ("Caustics", ("Caustics", "Caustics Scale")),
+}
 
 
 class WATER_MT_presets(bpy.types.Menu):
@@ -114,6 +121,9 @@ class VIEW3D_PT_water_surface(bpy.types.Panel):
             box = layout.box()
             box.label(text=title, icon=icon)
             for name in names:
+                if name.startswith("part:"):
+                    self.draw_part(box, node, name[len("part:") :])
+                    continue
                 socket = node.inputs[name]
                 if name == "Wind Direction":
                     col = box.column(align=True)
@@ -161,6 +171,21 @@ class VIEW3D_PT_water_surface(bpy.types.Panel):
             icon="CHECKMARK" if ready else "ERROR",
         )
         box.operator("object.water_mirror_setup", icon="MOD_MIRROR")
+
+    def draw_part(self, box, node, name):
+        """A part's switch, and its inputs while it is in the shader (out, it costs nothing)."""
+        label, inputs = _PARTS[name]
+        on = name in parts_built(node.node_tree)
+        op = box.operator(
+            "object.water_part_switch",
+            text=f"{label}: {'On' if on else 'Off'}",
+            icon="CHECKBOX_HLT" if on else "CHECKBOX_DEHLT",
+        )
+        if op is not None:  # None while the operator's poll refuses (linked water)
+            op.part, op.enable = name, not on
+        if on:
+            for input_name in inputs:
+                box.prop(node.inputs[input_name], "default_value", text=input_name)
 
     def draw_surroundings(self, box, obj):
         """Which collection the water measures its depth and shore against."""

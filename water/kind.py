@@ -22,7 +22,7 @@ OPEN_SEA = "open_sea"
 FEATURES = {
     LAKE: frozenset(
         {"mirror", "ray_tracing", "waves", "surroundings", "caustics", "physical_caustics"}
-        | {"floating", "repair", "presets", "sun_choice", "bump_choice"}
+        | {"floating", "repair", "presets", "sun_choice", "bump_choice", "shader_parts"}
     ),
     OCEAN: frozenset({"ray_tracing", "waves", "surroundings", "caustics", "floating", "repair"}),
     OPEN_SEA: frozenset({"ray_tracing", "surroundings", "caustics", "floating", "repair", "whitecaps"}),
@@ -34,6 +34,7 @@ _WHY = {
     "presets": "presets hold lake water values (edit it in the panel)",
     "physical_caustics": "physical caustics are set up for lake water",
     "sun_choice": "this choice is for lake water",
+    "shader_parts": "its depth colour, foam and caustics are always in its shading",
     "bump_choice": "this choice is for lake water",
     "waves": "its waves are Blender's Ocean modifier (set them in the panel)",
     "whitecaps": "whitecaps are the open sea's",

@@ -20,6 +20,7 @@ from ..nodes.material import (
     drive_sun_inputs,
     drive_time,
     first_sun,
+    fit_parts,
     water_group,
     water_node,
 )
@@ -226,8 +227,10 @@ def repair_water(material, scene=None):
             raise NotEditableError(why)
         node.node_tree = group
         restored, reset = _restore(node, kept, driven)
+        if spec.name == water_surface.NAME:
+            fit_parts(material)  # the variant with the parts the kept values turn on
         all_reset += reset
-        done.append(f"'{node.name}' uses '{group.name}' ({len(restored)} values kept)")
+        done.append(f"'{node.name}' uses '{node.node_tree.name}' ({len(restored)} values kept)")
         clock_scene = followed_scene or scene or bpy.context.scene
         if spec.name == water_surface.NAME:
             drive_time(material, clock_scene)

@@ -2,12 +2,15 @@
 ocean's `Water Ocean Shade`): one source of truth that the panel shows, presets fill and the
 `.blend` keeps."""
 
-from ..nodes.material import water_node
+from ..nodes.material import fit_parts, parts_built, parts_wanted, water_node
 from ..nodes.ocean_material import ocean_nodes
+from ..nodes.water_surface import PARTS
 from ..presets import schema
 from .kind import LAKE, OCEAN, shading_of, water_material
 
-__all__ = ("is_water", "read_values", "water_material", "write_values")
+__all__ = ("is_water", "read_values", "switch_part", "water_material", "write_values")
+
+PART_NAMES = tuple(part.name for part in PARTS)
 
 
 def is_water(obj):
@@ -97,4 +100,33 @@ def set_values(material, values):
         except (TypeError, ValueError):
             continue
         written.append(key)
+    if shading_of(material) == LAKE:
+        fit_parts(material)  # the parts the values turn on built in, those at 0 taken out
     return written
+
+
+def switch_part(material, name, on):
+    """Turns an optional part of the lake shading (`PART_NAMES`: depth colour, foam, caustics) on
+    or off: its switch (Absorption, Foam Amount, Caustics) goes to the part's usual value when
+    it was 0, or to 0, and the group becomes the variant with the parts now on (`fit_parts`).
+    Returns what it did, in words; ValueError for an unknown part or a water without lake shading.
+    """
+    part = next((p for p in PARTS if p.name == name), None)
+    if part is None:
+        raise ValueError(f"no part '{name}': choose from {', '.join(PART_NAMES)}")
+    node = water_node(material) if shading_of(material) == LAKE else None
+    if node is None or node.inputs.get(part.switch) is None:
+        raise ValueError(f"'{getattr(material, 'name', material)}' has no lake shading with {part.switch}")
+    socket = node.inputs[part.switch]
+    value = socket.default_value
+    colour = hasattr(value, "__len__")
+    above_zero = max(tuple(value)[:3] if colour else (value,)) > 0.0
+    if on and not above_zero:
+        socket.default_value = (*part.on_value, 1.0) if colour else part.on_value
+    elif not on:
+        socket.default_value = (0.0, 0.0, 0.0, 1.0) if colour else 0.0
+    fit_parts(material)
+    built = name in parts_built(node.node_tree)
+    if built and not on and name in parts_wanted(material, node):
+        return [f"{part.label} stays in the shader: {part.switch} is linked, animated or driven"]
+    return [f"{part.label} {'on' if built else 'off'} ({node.node_tree.name})"]
