@@ -14,7 +14,7 @@ import json
 
 import bpy
 
-from ..nodes.material import first_sun, glint_sun, water_node
+from ..nodes.material import first_sun, fit_parts, glint_sun, water_node
 from . import kind
 from .editable import check_editable
 from .ledger import claim, release
@@ -95,6 +95,8 @@ def enable(water, scene):
         claim(scene, f"cycles.{name}", least, holder, label, changes, at_least=True)
     label = "shader Caustics (Cycles computes them now)"
     claim(material, _shader_path(material), 0.0, holder, label, changes)
+    if kind.kind_of(water) == kind.LAKE:
+        fit_parts(material)  # the shader's caustics at 0 leave the shader: they cost nothing
     # What to let go of when switched off: the receivers and the sun by name (one renamed since is
     # left as it is), and whether the mesh was shaded flat.
     state = {"receivers": [o.name for o in receivers], "sun": sun.data.name, "flat": not all(smooth)}
@@ -132,4 +134,5 @@ def disable(water, scene):
     if kind.kind_of(water) == kind.LAKE:
         material = water_material(water)
         release(material, _shader_path(material), holder, "shader Caustics", changes)
+        fit_parts(material)  # the shader's caustics back in when their value came back
     return changes
