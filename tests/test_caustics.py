@@ -147,7 +147,6 @@ def test_caustics_move_light_around_without_adding_any_and_only_under_water(pool
 
 
 @pytest.mark.render
-@pytest.mark.newest_only
 def test_the_pattern_moves_with_the_wind_and_stands_still_without(pool, render):
     scene, patch = pool["scene"], pool["patch"]
     frames = {}
@@ -172,7 +171,6 @@ def test_the_pattern_moves_with_the_wind_and_stands_still_without(pool, render):
 
 
 @pytest.mark.render
-@pytest.mark.newest_only
 def test_the_contrast_falls_with_depth(pool, render):
     """Point 1: the same bed 1 m and 5 m down (moved; the surroundings read the new depth). The
     pattern's spread at 5 m is exp(-4 / FADE_DEPTH) = 0.61 of that at 1 m; without the fade it
@@ -205,7 +203,6 @@ def test_the_contrast_falls_with_depth(pool, render):
 
 
 @pytest.mark.render
-@pytest.mark.newest_only
 def test_bad_input_gives_finite_pixels_and_no_error(pool, render):
     """No sun, a sun below the horizon or straight down, Caustics Scale 0 or huge, a strength far
     above 1: never an error, NaN or black water; no sunlight, no caustics. (A sun hidden from
@@ -244,6 +241,7 @@ def test_bad_input_gives_finite_pixels_and_no_error(pool, render):
     assert spread["Caustics far above 1"] < 5.0, "the strength is kept in range"
 
 
+@pytest.mark.lts
 def test_a_sun_hidden_from_renders_turns_the_caustics_off(pool):
     """`Sun Lit` follows the sun's render visibility through its driver: 0 hidden, 1 shown."""
     sun, node, scene = pool["sun"], pool["node"], pool["scene"]
@@ -257,6 +255,7 @@ def test_a_sun_hidden_from_renders_turns_the_caustics_off(pool):
     assert node.inputs["Sun Lit"].default_value == 1.0
 
 
+@pytest.mark.lts
 def test_physical_caustics_switch_sets_cycles_up_and_puts_everything_back(pool):
     physical = harness.addon("water.physical_caustics")
     scene, water, node = pool["scene"], pool["water"], pool["node"]
@@ -285,7 +284,6 @@ def test_physical_caustics_switch_sets_cycles_up_and_puts_everything_back(pool):
 
 
 @pytest.mark.render
-@pytest.mark.newest_only
 def test_cycles_shows_the_pattern_both_ways(pool, render):
     """Cycles at 16 samples: the shader's pattern gives the bed the same contrast and brightness as
     in EEVEE. With Physical Caustics, Cycles' MNEE brings the sunlight through the water, which

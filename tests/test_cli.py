@@ -26,6 +26,7 @@ def saved(scene, tmp_path):
     return path
 
 
+@pytest.mark.lts
 def test_add_writes_a_new_file_with_water_and_prints_what_it_did(cli, saved, tmp_path, capsys):
     target = tmp_path / "with_water.blend"
     status = cli.main(
@@ -42,6 +43,7 @@ def test_add_writes_a_new_file_with_water_and_prints_what_it_did(cli, saved, tmp
     assert "Water Mirror" in bpy.data.objects
 
 
+@pytest.mark.lts
 def test_render_writes_the_image_of_one_frame(cli, saved, tmp_path, capsys):
     with_water = tmp_path / "with_water.blend"
     # A fully dull red water: unmistakable against the blue sky.

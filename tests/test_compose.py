@@ -19,7 +19,7 @@ import pytest
 
 import harness
 
-pytestmark = [pytest.mark.render, pytest.mark.full_ci]
+pytestmark = pytest.mark.render
 
 
 def _api():

@@ -207,6 +207,7 @@ def test_foam_covers_the_waterline_and_fades_out_within_its_width(lake, render):
     assert _view(lake, render, 7, "foam_none")[lake["inside"]].max() < 1e-4
 
 
+@pytest.mark.lts
 def test_foam_is_lit_white_bright_in_sun_and_dim_in_shadow(lake, render):
     _set(lake["node"], Foam_Width=2.0, Foam_Amount=1.0, Wave_Length=0.5)
     x = lake["hits"][..., 0]

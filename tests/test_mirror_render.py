@@ -101,6 +101,7 @@ def test_object_above_the_water_shows_mirrored_below_it_and_not_when_hidden(pond
     assert np.abs(hidden - SKY).max() < 0.03, "the sky shows instead"
 
 
+@pytest.mark.lts
 def test_object_outside_the_view_shows_in_the_mirror(pond, shown, render, project):
     scene = pond["scene"]
     camera = harness.add_camera(scene, (0, -2, 3), (0, 6, 0))
@@ -139,7 +140,6 @@ def _sky_share(pixels):
     return pixels[..., 2] / SKY[2]
 
 
-@pytest.mark.newest_only
 def test_sky_share_is_higher_at_a_grazing_view_than_a_steep_one(pond, shown, render):
     scene = pond["scene"]
     shown("floor")
@@ -200,7 +200,6 @@ def test_glint_follows_the_sun(pond, render):
     assert math.dist(*peaks) > 15
 
 
-@pytest.mark.newest_only
 def test_wave_height_widens_the_wobble_of_a_mirrored_block(pond, shown, render, project):
     """Wave Height tilts the reflection: the red block's mirror image frays more the higher it is."""
     scene = pond["scene"]

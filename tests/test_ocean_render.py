@@ -83,6 +83,7 @@ def test_eevee_renders_the_model_and_the_crests_move(sea, render):
     assert _error(second, predicted_first, inside) > 3 * _error(second, predicted_second, inside)
 
 
+@pytest.mark.lts
 def test_cycles_renders_the_same_ocean(sea, render):
     scene, camera = sea
     scene.render.engine = "CYCLES"

@@ -144,7 +144,6 @@ def _show(sea_scene, wind):
 
 
 @pytest.mark.render
-@pytest.mark.newest_only
 def test_whitecaps_none_in_a_light_wind_and_clear_in_a_strong_one(sea_scene, render):
     """The share of the sea the foam covers, seen from 30 m up: a pixel is foam where turning the
     whitecaps off darkens it by more than 0.05."""
@@ -168,7 +167,6 @@ def test_whitecaps_none_in_a_light_wind_and_clear_in_a_strong_one(sea_scene, ren
 
 
 @pytest.mark.render
-@pytest.mark.newest_only
 def test_the_sea_reaches_the_horizon(sea_scene, render):
     """From 2 m up, looking at the horizon: every pixel below the horizon's rows (its centre's ray
     goes down by more than two pixels and a hundredth of a degree: the film's filter blends the
@@ -410,6 +408,7 @@ def test_the_absorption_written_through_the_api_shows_in_the_sea_s_render(scene,
     assert red_over_blue["clear"] > 1.1 * red_over_blue["preset"] > 1.2 * red_over_blue["red_absorbing"]
 
 
+@pytest.mark.lts
 @pytest.mark.render
 def test_a_saved_sea_animates_and_renders_the_same_without_the_add_on(
     scene, render, tmp_path, addon_disabled_afterwards

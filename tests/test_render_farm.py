@@ -21,7 +21,7 @@ import pytest
 
 import harness
 
-pytestmark = [pytest.mark.render, pytest.mark.full_ci]
+pytestmark = pytest.mark.render
 
 FRAMES = (1, 13)
 
@@ -91,6 +91,7 @@ def _bat(*args):
     return done.returncode, done.stdout + done.stderr
 
 
+@pytest.mark.lts
 def test_bat_finds_nothing_outside_or_missing_and_its_pack_renders_the_same(shot, tmp_path):
     target = tmp_path / "packed"
     status, output = _bat("pack", shot["path"], target)
@@ -122,7 +123,6 @@ def test_frames_split_across_workers_equal_one_animation_job(shot, tmp_path):
     assert moved > 0.005, f"the water moves between the frames ({moved:.4f})"
 
 
-@pytest.mark.newest_only
 def test_cli_renders_a_range_with_padding_and_a_line_a_frame(shot, tmp_path, capfd):
     cli = harness.addon("cli")
     status = cli.main(["render", str(shot["path"]), str(tmp_path / "cli_###.png"), "--frames", "3-5"])

@@ -7,7 +7,7 @@ import pytest
 
 import harness
 
-pytestmark = pytest.mark.render
+pytestmark = [pytest.mark.render, pytest.mark.lts]
 
 
 def test_saved_water_renders_the_same_without_the_add_on_and_with_auto_run_off(

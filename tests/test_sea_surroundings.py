@@ -176,7 +176,6 @@ def renders(shore, tmp_path_factory):
 
 
 @pytest.mark.render
-@pytest.mark.newest_only
 def test_the_bed_shows_through_shallow_sea_and_fades_with_depth(shore, renders):
     """Red/blue over 0.5-2 m of water is the sand's; over 6-8 m it is the deep water's; without
     the surroundings neither shows any sand (the seeds' ocean, red/blue under 0.15)."""
@@ -201,7 +200,6 @@ def test_the_bed_shows_through_shallow_sea_and_fades_with_depth(shore, renders):
 
 
 @pytest.mark.render
-@pytest.mark.newest_only
 def test_shore_foam_lines_the_waterline_and_none_further_out(shore, renders):
     """Turning the foam off darkens pixels within Foam Width (as `read_values` reads it) of the
     waterline, and none 3 m beyond it."""
@@ -217,7 +215,6 @@ def test_shore_foam_lines_the_waterline_and_none_further_out(shore, renders):
 
 
 @pytest.mark.render
-@pytest.mark.newest_only
 def test_caustics_move_light_on_the_shallow_bed_without_adding_any(shore, renders):
     """Caustics on / off, per pixel, in the close-up over 2 m of water: the ratio varies (a
     pattern) around 1; and in the wide view over 6-8 m it is fainter than over 1-3 m."""
@@ -243,7 +240,6 @@ def test_caustics_move_light_on_the_shallow_bed_without_adding_any(shore, render
 
 
 @pytest.mark.render
-@pytest.mark.newest_only
 def test_cycles_shows_the_same_shallows(shore, renders):
     """The same frame in Cycles (16 samples, not denoised): over bands of depth, the mean colour
     per channel as EEVEE's within 0.03 (measured, the channel that differs most: 0.011, 0.012,

@@ -18,7 +18,7 @@ import pytest
 
 import harness
 
-pytestmark = [pytest.mark.render, pytest.mark.full_ci]
+pytestmark = pytest.mark.render
 
 IOR = 1.33
 ABSORPTION = (0.6, 0.15, 0.08)
@@ -298,6 +298,7 @@ def _open_water(scene, camera):
     return mask
 
 
+@pytest.mark.lts
 def test_cycles_shows_the_same_depth_colour_and_foam(scene, render):
     """Debug Views 6 and 7 are unlit, so EEVEE and Cycles must agree on them where the water is.
 

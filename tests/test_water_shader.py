@@ -168,6 +168,7 @@ def test_glint_view_matches_the_formula_and_follows_the_sun(water, render):
     assert math.dist(*peaks) > 15
 
 
+@pytest.mark.lts
 def test_final_view_is_the_composition_of_the_debug_views(water, render):
     node = water["node"]
     # Sun straight down: its mirror highlight (a lamp's specular on the sharp glossy) stays out of view.
@@ -191,7 +192,6 @@ def test_final_view_is_the_composition_of_the_debug_views(water, render):
     assert np.abs(views[1] - views[2])[mask].mean() > 0.1
 
 
-@pytest.mark.newest_only
 def test_two_frames_differ_only_with_wind(water, render):
     node, scene = water["node"], water["scene"]
     mask, _origin, _hits = _flat_water_mask(water, render)
@@ -223,6 +223,7 @@ def test_time_follows_the_scene_clock(water):
     assert all(fc.driver.is_simple_expression for fc in drivers)
 
 
+@pytest.mark.lts
 def test_group_renders_in_cycles(water, render):
     scene, node = water["scene"], water["node"]
     eevee = scene.render.engine

@@ -63,6 +63,7 @@ def test_heights_and_normals_match_the_four_sines_at_two_times(scene, wave_math)
     assert np.ptp(co[:, 2]) > amplitude_sum, "real waves, not a flat sheet"
 
 
+@pytest.mark.lts
 def test_every_wave_input_counts_and_zero_amplitude_removes_a_wave(scene, wave_math, waves):
     bpy.ops.mesh.primitive_circle_add(vertices=64, radius=20, fill_type="TRIFAN")  # any flat mesh
     disc = bpy.context.active_object
@@ -96,6 +97,7 @@ def test_with_every_amplitude_zero_the_grid_is_flat(scene, waves):
     assert np.allclose(normal, (0, 0, 1))
 
 
+@pytest.mark.lts
 def test_the_lake_combines_with_waves_and_the_panel_finds_their_inputs(scene, waves):
     bpy.ops.object.water_surface_add(preset="lake", waves=True, resolution=65, size=40)
     lake = bpy.context.active_object
@@ -177,6 +179,7 @@ def test_the_add_operator_grid_has_the_asked_resolution_and_uvs(scene):
     assert uv.min() == pytest.approx(0) and uv.max() == pytest.approx(1)
 
 
+@pytest.mark.lts
 def test_saved_ocean_animates_with_the_add_on_disabled(scene, wave_math, tmp_path):
     bpy.ops.object.water_surface_add(preset="ocean", size=20, resolution=17)
     rest = _rest(bpy.context.active_object)
