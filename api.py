@@ -21,6 +21,7 @@ import bpy
 
 from . import presets as _presets
 from .presets import PresetError
+from .water import camera_clip as _camera_clip
 from .water import files as _files
 from .water import floating as _floating
 from .water import kind as _kind
@@ -55,6 +56,7 @@ __all__ = (
     "add_water_to_file",
     "add_waves",
     "apply_preset",
+    "extend_camera_clip",
     "float_on_water",
     "is_water",
     "kind_of",
@@ -218,6 +220,15 @@ def switch_part(water: bpy.types.Object, part: str, on: bool = True) -> list[str
     if problem:
         raise MirrorSetupError(problem)
     return _values.switch_part(material, part, on)
+
+
+def extend_camera_clip(
+    water: bpy.types.Object, camera: bpy.types.Object | None = None, scene: bpy.types.Scene | None = None
+) -> list[str]:
+    """Moves the Clip End of `camera` (default: the scene's) past the farthest corner of `water`,
+    so none of it is cut off (an open sea reaches kilometres; a camera sees 100 m by default).
+    Returns the change in words, [] when it already sees all of it; ValueError without a camera."""
+    return _camera_clip.extend_clip(scene or bpy.context.scene, water, camera)
 
 
 def preset_ids() -> list[str]:

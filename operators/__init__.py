@@ -3,6 +3,7 @@
 import bpy
 
 from .add_water import OBJECT_OT_water_surface_add
+from .camera_ops import OBJECT_OT_water_camera_clip
 from .caustics_ops import OBJECT_OT_water_physical_caustics
 from .float_ops import OBJECT_OT_water_float, OBJECT_OT_water_float_stop
 from .link_ops import OBJECT_OT_water_surface_bump_set, OBJECT_OT_water_surface_sun_set
@@ -34,6 +35,7 @@ classes = (
     OBJECT_OT_water_float,
     OBJECT_OT_water_float_stop,
     OBJECT_OT_water_remove,
+    OBJECT_OT_water_camera_clip,
 )
 
 _register_classes, _unregister_classes = bpy.utils.register_classes_factory(classes)

@@ -10,7 +10,7 @@ from ..nodes.material import bump_image, glint_sun, parts_built, water_node
 from ..nodes.ocean_material import ocean_nodes
 from ..nodes.water_surface import DEBUG_VIEWS
 from ..nodes.water_waves import WAVE_COUNT
-from ..water import floating, kind, open_sea, physical_caustics
+from ..water import camera_clip, floating, kind, open_sea, physical_caustics
 from ..water.editable import why_not_editable
 from ..water.mirror import find_probe
 from ..water.repair import needs_repair
@@ -228,6 +228,11 @@ class VIEW3D_PT_water_surface(bpy.types.Panel):
         whitecaps = open_sea.whitecaps_input(material)
         if whitecaps is not None:
             box.prop(whitecaps, "default_value", text="Whitecaps")
+        note = camera_clip.clip_note(bpy.context.scene, obj)
+        if note is not None:  # the camera cuts the far sea off: offer to see it all
+            clip_end = bpy.context.scene.camera.data.clip_end
+            box.label(text=f"The camera's Clip End cuts the sea off at {clip_end:g} m", icon="ERROR")
+            box.operator("object.water_camera_clip", icon="CAMERA_DATA")
 
     def draw_floating(self, layout, context):
         """Float the selected objects on the water below them, or stop."""

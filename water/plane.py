@@ -10,7 +10,7 @@ from .. import presets
 from ..nodes.material import make_water_material
 from ..nodes.ocean_material import make_ocean_material
 from ..presets import schema
-from . import kind, mirror, open_sea, scene_state, sea_math, surroundings, waves
+from . import camera_clip, kind, mirror, open_sea, scene_state, sea_math, surroundings, waves
 from .editable import check_editable
 from .grid import grid_mesh, max_resolution
 from .sea_mesh import new_sea_mesh
@@ -141,6 +141,8 @@ def add_water(
         _roll_back(scene, before)
         message = str(error).strip().splitlines()[-1] if str(error).strip() else type(error).__name__
         raise AddWaterError(f"adding water failed, nothing was added: {message}") from error
+    note = camera_clip.clip_note(scene, obj)
+    notes += [note] if note else []
     return AddedWater(obj, material, values, changes, notes)
 
 
