@@ -60,25 +60,21 @@ def retire_legacy_groups():
         mark(tree, full, version)
 
 
-def parts_built(tree):
-    """The optional parts built into a `Water Surface` group (all of them in a group it cannot
-    tell: a legacy one, or one without the parts' nodes)."""
+def parts_built(tree, spec=water_surface.FULL_SPEC):
+    """The optional parts of `spec` (default: the lake's) built into `tree`."""
     if tree is None:
         return frozenset()
-    return frozenset(
-        part.name
-        for part in water_surface.PARTS
-        if water_surface.FULL_SPEC.part_nodes(part.name)[0] in tree.nodes
-    )
+    return frozenset(part.name for part in spec.parts if spec.part_nodes(part.name)[0] in tree.nodes)
 
 
-def parts_wanted(material, node=None):
-    """The optional parts `material`'s water values turn on: a switch above 0, or one whose value
-    may change (linked, animated or driven), is on."""
+def parts_wanted(material, node=None, spec=water_surface.FULL_SPEC):
+    """The optional parts of `spec` (default: the lake's) that the values of `node` (default:
+    `material`'s lake node) turn on: a switch above 0, or one whose value may change (linked,
+    animated or driven), is on."""
     node = node or water_node(material)
     moving = _moving_inputs(material, node)
     wanted = set()
-    for part in water_surface.PARTS:
+    for part in spec.parts:
         socket = node.inputs.get(part.switch)
         if socket is None or not hasattr(socket, "default_value"):
             continue
@@ -115,38 +111,49 @@ def _action_fcurves(action):
     layers = getattr(action, "layers", None)
     if layers:
         return [
-            fc
+            fcurve
             for layer in layers
             for strip in layer.strips
             for bag in strip.channelbags
-            for fc in bag.fcurves
+            for fcurve in bag.fcurves
         ]
     return list(getattr(action, "fcurves", ()))
 
 
-def fit_parts(material):
-    """Swaps `material`'s water group for the variant with the parts its values turn on
-    (`parts_wanted`), keeping every value; returns whether it changed. A group that is not the
-    add-on's own, lacks inputs (needs repair) or is library data is left as it is."""
-    node = water_node(material)
+def fit_node_parts(material, node, spec, build):
+    """Points `node` (a group node of `material`) at the variant of `spec` with the parts its
+    values turn on (`parts_wanted`), made by `build(parts)`, keeping every value; returns whether
+    it changed. A group that is not the add-on's own, lacks inputs (needs repair) or is library
+    data is left as it is; the group left behind is removed when nothing uses it any more."""
     if node is None or node.node_tree is None or not is_local(material):
         return False
     tree = node.node_tree
     if role_of(tree) is None or not is_original(tree):
         return False
-    if [socket.name for socket in node.inputs] != [socket.name for socket in water_surface.SPEC.inputs]:
+    if [socket.name for socket in node.inputs] != [socket.name for socket in spec.inputs]:
         return False
-    wanted = parts_wanted(material, node)
-    if parts_built(tree) == wanted:
+    wanted = parts_wanted(material, node, spec)
+    if parts_built(tree, spec) == wanted:
         return False
     kept = {s.name: _copy(s.default_value) for s in node.inputs if hasattr(s, "default_value")}
-    node.node_tree = water_group(bump_image(material), wanted)
+    node.node_tree = build(wanted)
     for socket in node.inputs:
         if socket.name in kept:
             socket.default_value = kept[socket.name]
-    if tree.users == 0 and tree.use_fake_user is False:
+    if tree.users == 0 and not tree.use_fake_user:
         bpy.data.node_groups.remove(tree)  # ours, and no material uses it any more
     return True
+
+
+def fit_parts(material):
+    """`fit_node_parts` for `material`'s lake group: the parts its values turn on built in, those
+    at 0 taken out."""
+    return fit_node_parts(
+        material,
+        water_node(material),
+        water_surface.FULL_SPEC,
+        lambda parts: water_group(bump_image(material), parts),
+    )
 
 
 def _copy(value):

@@ -21,7 +21,7 @@ world's image: the lookup sits between them in the material.
 
 from . import bump_uv, caustics, water_surface
 from .bump_uv import TIME_INPUT
-from .spec import BUMP_IMAGE, GroupSpec, Node, Socket, attribute, group_node, math, pass_inputs, vmath
+from .spec import BUMP_IMAGE, GroupSpec, Node, Part, Socket, attribute, group_node, math, pass_inputs, vmath
 from .water_waves import NORMAL_ATTRIBUTE
 
 NORMAL_NAME = "Water Ocean Normal"
@@ -248,13 +248,36 @@ SHADE_INPUTS = (
     caustics.CAUSTICS_INPUT,
     caustics.CAUSTICS_SCALE_INPUT,
     caustics.SUN_LIT_INPUT,
+    Socket(
+        "Traced Sky",
+        "NodeSocketFloat",
+        0.0,
+        min=0.0,
+        max=1.0,
+        subtype="FACTOR",
+        tooltip="1: the renderer reflects the world, whatever it is (Sky Texture, gradient, image), and "
+        "the sun's own glint, as on the lake; 0: the Sky input (the world's image looked up, as the seeds)",
+    ),
+)
+TRACED_SKY = "Traced Sky"
+# The traced sky: a sharp Glossy closure at (1 - F) in place of the Sky input's colour. Built
+# only into the group's "+ Traced Sky" variant (a material whose world has no image takes it).
+PARTS = (
+    Part(
+        "traced_sky",
+        "Traced Sky",
+        TRACED_SKY,
+        1.0,
+        off_links=(("water_shader:Shader", "mix:#1"),),
+    ),
 )
 
 _T_NODES, _T_LINKS = water_surface.transmittance_nodes()
 
-SHADE_SPEC = GroupSpec(
+FULL_SHADE_SPEC = GroupSpec(
     name=SHADE_NAME,
-    version=3,  # 2: whitecaps; 3: depth colour, shore foam and caustics from the surroundings
+    # 2: whitecaps; 3: depth colour, shore foam and caustics from the surroundings; 4: the traced sky
+    version=4,
     description="Ocean colour: deep blue and the reflected sky by the ocean Fresnel, plus the glint; "
     "white lit foam on the crests; with the surroundings, the bed seen through shallow water, "
     "shore foam and caustics",
@@ -273,10 +296,26 @@ SHADE_SPEC = GroupSpec(
         "hidden": vmath("SUBTRACT", 25, "1 - T", a=(1.0, 1.0, 1.0)),
         "deep_hides": vmath("MULTIPLY", 26, "deep x (1 - T)"),
         "deep": vmath("SCALE", 27, "deep (1 - T) F"),
+        "looked_up": math("SUBTRACT", 4, "1 - Traced Sky", a=1.0),
+        "sky_share": math("MULTIPLY", 5, "(1 - F) x looked up"),
         "sky": vmath("SCALE", 5, "sky * (1 - F)"),
         "mean": vmath("DOT_PRODUCT", 5, "mean(sky)", b=(1 / 3, 1 / 3, 1 / 3)),
-        "glint": math("POWER", 6, "pow(mean, Glint Power)"),
+        "glint_raw": math("POWER", 6, "pow(mean, Glint Power)"),
+        "glint": math("MULTIPLY", 6, "x looked up"),
         "glint_v": Node("ShaderNodeCombineXYZ", 7, label="glint (white)"),
+        # The traced sky (part "traced_sky"): the world reflected by the renderer at (1 - F).
+        "mirror_share": Node(
+            "ShaderNodeMath", 5, {"operation": "MULTIPLY"}, label="(1 - F) x Traced Sky", part="traced_sky"
+        ),
+        "mirror": Node(
+            "ShaderNodeBsdfAnisotropic",
+            30,
+            {"distribution": "GGX"},
+            {"Roughness": 0.0},
+            label="the world reflected",
+            part="traced_sky",
+        ),
+        "with_mirror": Node("ShaderNodeAddShader", 32, label="+ reflection", part="traced_sky"),
         "water": vmath("ADD", 28),
         "color": vmath("ADD", 29, "colour"),
         "emit": Node("ShaderNodeEmission", 30, values={"Strength": 1.0}, label="unlit"),
@@ -328,6 +367,7 @@ SHADE_SPEC = GroupSpec(
         "sides": Node("ShaderNodeMixShader", 33, label="above or below"),
     },
     includes=(water_surface.FOAM_SPEC,),
+    parts=PARTS,
     links=(
         ("geometry:Incoming", "cos:#0"),
         ("input:Normal", "cos:#1"),
@@ -341,11 +381,22 @@ SHADE_SPEC = GroupSpec(
         ("hidden:Vector", "deep_hides:#1"),
         ("deep_hides:Vector", "deep:#0"),
         ("F:Value", "deep:Scale"),
+        ("input:Traced Sky", "looked_up:#1"),
+        ("one_minus_F:Value", "sky_share:#0"),
+        ("looked_up:Value", "sky_share:#1"),
         ("input:Sky", "sky:#0"),
-        ("one_minus_F:Value", "sky:Scale"),
+        ("sky_share:Value", "sky:Scale"),
         ("input:Sky", "mean:#0"),
-        ("mean:Value", "glint:#0"),
-        ("input:Glint Power", "glint:#1"),
+        ("mean:Value", "glint_raw:#0"),
+        ("input:Glint Power", "glint_raw:#1"),
+        ("glint_raw:Value", "glint:#0"),
+        ("looked_up:Value", "glint:#1"),
+        ("one_minus_F:Value", "mirror_share:#0"),
+        ("input:Traced Sky", "mirror_share:#1"),
+        ("mirror_share:Value", "mirror:Color"),
+        ("input:Normal", "mirror:Normal"),
+        ("water_shader:Shader", "with_mirror:#0"),
+        ("mirror:BSDF", "with_mirror:#1"),
         ("glint:Value", "glint_v:X"),
         ("glint:Value", "glint_v:Y"),
         ("glint:Value", "glint_v:Z"),
@@ -371,7 +422,7 @@ SHADE_SPEC = GroupSpec(
         ("cover:Value", "foam_cover:#0"),
         ("shore_foam:Coverage", "foam_cover:#1"),
         ("foam_cover:Value", "mix:Fac"),
-        ("water_shader:Shader", "mix:#1"),
+        ("with_mirror:Shader", "mix:#1"),
         ("foam_bsdf:BSDF", "mix:#2"),
         ("foam_glow:Emission", "mix:#2"),
         ("geometry:Backfacing", "sides:Fac"),
@@ -380,3 +431,7 @@ SHADE_SPEC = GroupSpec(
         ("sides:Shader", "output:Shader"),
     ),
 )
+
+# The shade that looks the Sky input up (the seeds' ocean, and what version 3 and older built):
+# the one in `SPECS`, so older groups upgrade in place to it.
+SHADE_SPEC = FULL_SHADE_SPEC.variant(())

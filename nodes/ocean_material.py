@@ -3,9 +3,11 @@ direction, and the ocean colour (groups in `ocean.py`), with the open sea's
 whitecaps where the mesh carries them.
 
 The sky is the world's environment image when it has one (an Environment
-Texture node in the material, as the seeds sample their sky cube), otherwise
-the world's background colour, followed by simple-expression drivers so a
-changed world shows without running anything. The shade's clock and sun (for the
+Texture node in the material, as the seeds sample their sky cube). Any other world (Blender's
+Sky Texture, a gradient, a plain colour) is reflected by the renderer itself: the shade's
+"+ Traced Sky" variant adds a sharp Glossy closure at the sky's weight, so every wave shows
+whatever the sky is, in EEVEE and Cycles (the Sky node then holds the world's background
+colour, followed by simple-expression drivers, and weighs nothing). The shade's clock and sun (for the
 surroundings' foam and caustics) are drivers too, as the lake's.
 """
 
@@ -19,6 +21,7 @@ from .material import (
     drive_socket,
     drive_sun_inputs,
     first_sun,
+    fit_node_parts,
     new_node_material,
     trace_refraction,
 )
@@ -67,7 +70,10 @@ def make_ocean_material(name="Ocean", scene=None):
     """A new ocean material for a mesh with the `Water Waves` modifier (or any flat mesh)."""
     scene = scene or bpy.context.scene
     normal_group = ensure_group(SPECS[ocean.NORMAL_NAME], SPECS, image=ensure_bump_image())
-    shade_group = ensure_group(SPECS[ocean.SHADE_NAME], SPECS)
+    # A world with an image is looked up as the seeds look their sky cube up; any other world
+    # (Sky Texture, a gradient, a colour) is reflected by the renderer (the traced sky).
+    traced = _world_environment(scene.world) is None
+    shade_group = ensure_group(ocean.FULL_SHADE_SPEC.variant({"traced_sky"} if traced else ()), SPECS)
     material = new_node_material(name)
     tree = material.node_tree
     normal = tree.nodes.new("ShaderNodeGroup")
@@ -76,6 +82,7 @@ def make_ocean_material(name="Ocean", scene=None):
     sky.name, sky.label, sky.location = SKY_NODE, "sky in the reflected direction", (-300, -150)
     shade = tree.nodes.new("ShaderNodeGroup")
     shade.node_tree, shade.name, shade.location, shade.width = shade_group, OCEAN_NODE, (0, 0), 220
+    shade.inputs[ocean.TRACED_SKY].default_value = 1.0 if traced else 0.0
     output = tree.nodes.new("ShaderNodeOutputMaterial")
     output.location = (300, 0)
     tree.links.new(normal.outputs["Normal"], shade.inputs["Normal"])
@@ -104,3 +111,13 @@ def ocean_nodes(material):
     if shade is None or normal is None or shade.type != "GROUP":
         return None
     return normal, shade
+
+
+def fit_shade_parts(material):
+    """`fit_node_parts` for an ocean material's shade: the traced sky built in while its
+    `Traced Sky` is above 0."""
+    nodes = ocean_nodes(material)
+    if nodes is None:
+        return False
+    spec = ocean.FULL_SHADE_SPEC
+    return fit_node_parts(material, nodes[1], spec, lambda parts: ensure_group(spec.variant(parts), SPECS))

@@ -24,7 +24,7 @@ from ..nodes.material import (
     water_group,
     water_node,
 )
-from ..nodes.ocean_material import NORMAL_NODE, OCEAN_NODE, SKY_NODE, ocean_nodes
+from ..nodes.ocean_material import NORMAL_NODE, OCEAN_NODE, SKY_NODE, fit_shade_parts, ocean_nodes
 from .editable import NotEditableError, check_editable, why_not_editable
 from .kind import LAKE, OCEAN, shading_of
 
@@ -229,6 +229,8 @@ def repair_water(material, scene=None):
         restored, reset = _restore(node, kept, driven)
         if spec.name == water_surface.NAME:
             fit_parts(material)  # the variant with the parts the kept values turn on
+        elif spec.name == ocean.SHADE_NAME:
+            fit_shade_parts(material)  # the traced sky back when it was on
         all_reset += reset
         done.append(f"'{node.name}' uses '{node.node_tree.name}' ({len(restored)} values kept)")
         clock_scene = followed_scene or scene or bpy.context.scene

@@ -1,0 +1,136 @@
+"""The ocean shading reflects whatever world the scene has, in EEVEE and Cycles.
+
+A world with an image is looked up as the seeds look their sky up (test_ocean_render.py holds
+that to the seeds' model); any other world, Blender's Sky Texture or a procedural gradient, is
+reflected by the renderer (the shade's "+ Traced Sky" variant). Before, such a world was one flat
+colour and the whole sea one tone.
+"""
+
+import bpy
+import numpy as np
+import pytest
+
+import harness
+
+pytestmark = pytest.mark.render
+
+HORIZON = np.array((0.9, 0.55, 0.3))  # warm at the horizon ...
+ZENITH = np.array((0.1, 0.25, 0.9))  # ... deep blue straight up
+DEEP = np.array((0.0, 0.2, 0.4))  # the ocean shading's Deep Color
+
+
+def _gradient_world(scene):
+    """A procedural sky: HORIZON at the horizon to ZENITH straight up, linear in the direction's
+    height z (and HORIZON below the horizon): no image, no single colour."""
+    world = bpy.data.worlds.new("Gradient Sky")
+    if bpy.app.version < (5, 0, 0):
+        world.use_nodes = True
+    nodes, links = world.node_tree.nodes, world.node_tree.links
+    nodes.clear()
+    coords = nodes.new("ShaderNodeTexCoord")
+    split = nodes.new("ShaderNodeSeparateXYZ")
+    ramp = nodes.new("ShaderNodeMix")
+    ramp.data_type = "RGBA"
+    ramp.clamp_factor = True
+    ramp.inputs["A"].default_value = (*HORIZON, 1.0)
+    ramp.inputs["B"].default_value = (*ZENITH, 1.0)
+    background = nodes.new("ShaderNodeBackground")
+    output = nodes.new("ShaderNodeOutputWorld")
+    links.new(coords.outputs["Generated"], split.inputs["Vector"])
+    links.new(split.outputs["Z"], ramp.inputs["Factor"])
+    links.new(ramp.outputs["Result"], background.inputs["Color"])
+    links.new(background.outputs["Background"], output.inputs["Surface"])
+    scene.world = world
+    return world
+
+
+def _sky_texture_world(scene):
+    """Blender's own Sky Texture (its physical model: Nishita, or its successor from 5.0), a sun
+    18 degrees up."""
+    world = bpy.data.worlds.new("Sky Texture")
+    if bpy.app.version < (5, 0, 0):
+        world.use_nodes = True
+    nodes, links = world.node_tree.nodes, world.node_tree.links
+    nodes.clear()
+    sky = nodes.new("ShaderNodeTexSky")
+    kinds = [item.identifier for item in sky.bl_rna.properties["sky_type"].enum_items]
+    sky.sky_type = next(k for k in ("NISHITA", "MULTIPLE_SCATTERING", "SINGLE_SCATTERING") if k in kinds)
+    sky.sun_elevation = np.radians(18.0)
+    sky.sun_rotation = np.radians(200.0)
+    background = nodes.new("ShaderNodeBackground")
+    background.inputs["Strength"].default_value = 0.3
+    output = nodes.new("ShaderNodeOutputWorld")
+    links.new(sky.outputs["Color"], background.inputs["Color"])
+    links.new(background.outputs["Background"], output.inputs["Surface"])
+    scene.world = world
+    return world
+
+
+def _flat_sea(scene):
+    """A 400 m plane with the ocean shading, its bump off: the shading normal is +Z."""
+    added = harness.addon("api").add_water(scene, shading="ocean", size=400.0, see_surroundings=False)
+    normal, shade = harness.addon("nodes.ocean_material").ocean_nodes(added.material)
+    normal.inputs["Bump Strength"].default_value = 0.0
+    return added, shade
+
+
+def _expected(scene, camera):
+    """numpy: deep F + sky(reflect(d)) (1 - F), F = dot(-d, n) / 2 + 0.5, on the flat sea."""
+    origin, directions = harness.pixel_rays(scene, camera)
+    _hits, ok = harness.hit_plane_z(origin, directions)
+    f = (-directions[..., 2] / 2 + 0.5)[..., None]
+    reflected_z = np.clip(-directions[..., 2], 0.0, 1.0)[..., None]
+    sky = HORIZON + (ZENITH - HORIZON) * reflected_z
+    return DEEP * f + sky * (1 - f), ok
+
+
+@pytest.mark.parametrize("engine", ["eevee", "CYCLES"])
+def test_a_procedural_sky_is_reflected_as_it_is(addon, eevee, render, engine):
+    scene = harness.clean_scene(
+        engine=eevee if engine == "eevee" else "CYCLES", width=48, height=32, samples=4
+    )
+    _gradient_world(scene)
+    added, shade = _flat_sea(scene)
+    assert shade.node_tree.name == "Water Ocean Shade + Traced Sky"
+    camera = harness.add_camera(scene, (0.0, -20.0, 6.0), (0.0, 40.0, 0.0), lens=30.0)
+    scene.camera = camera
+    expected, on_sea = _expected(scene, camera)
+    pixels = render(scene, f"gradient-{engine}", exr=True)[..., :3]
+    error = np.abs(pixels - expected)[on_sea]
+    # The reflected sky runs from warm near the horizon to blue nearer the camera; one flat tone
+    # (the world's old stand-in colour) misses by 0.2-0.5.
+    spread = expected[on_sea].max(axis=0) - expected[on_sea].min(axis=0)
+    assert spread.max() > 0.2, spread
+    print(f"{engine}: mean error {error.mean():.4f}, 95th percentile {np.percentile(error, 95):.4f}")
+    assert error.mean() < 0.03 and np.percentile(error, 95) < 0.06
+
+
+def _wavy_sea_under_the_sky_texture(engine_id):
+    scene = harness.clean_scene(engine=engine_id, width=64, height=36, samples=4)
+    _sky_texture_world(scene)
+    added = harness.addon("api").add_water(scene, preset="ocean", size=200.0, see_surroundings=False)
+    camera = harness.add_camera(scene, (0.0, -30.0, 8.0), (0.0, 30.0, 0.0), lens=30.0)
+    scene.camera = camera
+    origin, directions = harness.pixel_rays(scene, camera)
+    hits, ok = harness.hit_plane_z(origin, directions)
+    ok &= (np.abs(hits[..., :2]) < 90.0).all(axis=-1)
+    return scene, added, ok
+
+
+def test_the_sky_texture_shows_every_wave_in_eevee_and_cycles(addon, eevee, render):
+    seen = {}
+    for engine in (eevee, "CYCLES"):
+        scene, added, on_sea = _wavy_sea_under_the_sky_texture(engine)
+        _normal, shade = harness.addon("nodes.ocean_material").ocean_nodes(added.material)
+        assert shade.inputs["Traced Sky"].default_value == 1.0
+        pixels = render(scene, f"sky-texture-{engine}", exr=True)[..., :3]
+        luminance = pixels @ np.array((0.2126, 0.7152, 0.0722))
+        sea = luminance[on_sea]
+        # Waves: neighbouring pixels of the sea differ (one flat tone would give 0).
+        across = np.abs(np.diff(luminance, axis=1))[on_sea[:, 1:] & on_sea[:, :-1]]
+        seen[engine] = (sea.mean(), np.median(across) / sea.mean())
+        print(f"{engine}: sea mean {sea.mean():.3f}, median step between neighbours {seen[engine][1]:.3f}")
+        assert seen[engine][1] > 0.02, "the waves show"
+    # The two engines agree on how bright the sea is.
+    means = [mean for mean, _step in seen.values()]
+    assert max(means) / min(means) < 1.3, seen
