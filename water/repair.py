@@ -7,6 +7,8 @@ the add-on's group (rebuilt if it is the broken one), keeping the values of
 the sockets still there.
 """
 
+import itertools
+
 import bpy
 
 from ..nodes import SPECS, ocean, water_surface
@@ -25,6 +27,7 @@ from ..nodes.material import (
     water_node,
 )
 from ..nodes.ocean_material import NORMAL_NODE, OCEAN_NODE, SKY_NODE, fit_shade_parts, ocean_nodes
+from ..nodes.ownership import role_of
 from .editable import NotEditableError, check_editable, why_not_editable
 from .kind import LAKE, OCEAN, shading_of
 
@@ -136,12 +139,35 @@ def _take_drivers(material, node):
     return scene, sun
 
 
+# The descriptions with every optional part, by the name of the group without any.
+_FULL = {water_surface.NAME: water_surface.FULL_SPEC, ocean.SHADE_NAME: ocean.FULL_SHADE_SPEC}
+
+
+def _variant_parts(node, spec):
+    """The optional parts of the variant `node`'s group is (read from its role); () for a group
+    that is no variant of ours (a user's, or none)."""
+    full = _FULL.get(spec.name)
+    tree = getattr(node, "node_tree", None)
+    role = role_of(tree) if tree is not None else None
+    if full is None or role is None:
+        return ()
+    names = [part.name for part in full.parts]
+    for size in range(len(names) + 1):
+        for parts in itertools.combinations(names, size):
+            if full.variant(parts).name == role:
+                return parts
+    return ()
+
+
 def _target_group(node, spec, image_source):
-    """The add-on's group for `node`, rebuilt when it is the broken one."""
+    """The add-on's group for `node` (the same variant as its own), rebuilt when it is the broken one."""
+    parts = _variant_parts(node, spec)
 
     def build():
         if spec.name == water_surface.NAME:
-            return water_group(image_source)
+            return water_group(image_source, parts)
+        if spec.name == ocean.SHADE_NAME:
+            return ensure_group(ocean.FULL_SHADE_SPEC.variant(parts), SPECS)
         image = ensure_bump_image() if spec.name == ocean.NORMAL_NAME else None
         return ensure_group(spec, SPECS, image=image)
 
