@@ -249,6 +249,15 @@ SHADE_INPUTS = (
     caustics.CAUSTICS_SCALE_INPUT,
     caustics.SUN_LIT_INPUT,
     Socket(
+        "Debug View",
+        "NodeSocketInt",
+        0,
+        min=0,
+        max=8,
+        tooltip="0 final, 3 Fresnel F, 4 shading normal (world), 5 sun glint, 6 transmittance, "
+        "7 foam and whitecaps, 8 caustics, each unlit (1 and 2: the final picture)",
+    ),
+    Socket(
         "Traced Sky",
         "NodeSocketFloat",
         0.0,
@@ -260,6 +269,16 @@ SHADE_INPUTS = (
     ),
 )
 TRACED_SKY = "Traced Sky"
+# The ocean's debug views: the lake's numbers for what the ocean shading has (1 and 2, the lake's
+# closures alone, show the final picture here).
+DEBUG_VIEWS = (
+    (3, "F, grey"),
+    (4, "shading normal n * 0.5 + 0.5 (world space)"),
+    (5, "sun glint: pow(max(reflect(L, n) . eye, 0), Glint Power)"),
+    (6, "transmittance T (0 without surroundings)"),
+    (7, "foam: whitecaps and shore foam"),
+    (8, "caustic factor"),
+)
 # The traced sky: a sharp Glossy closure at (1 - F) in place of the Sky input's colour. Built
 # only into the group's "+ Traced Sky" variant (a material whose world has no image takes it).
 PARTS = (
@@ -274,9 +293,72 @@ PARTS = (
 
 _T_NODES, _T_LINKS = water_surface.transmittance_nodes()
 
+
+def _debug_nodes():
+    """Each debug view's value as an unlit emission, mixed over the final picture while a view
+    from 3 to 8 is asked; any other number shows the final picture."""
+    values = {
+        3: "F:Value",
+        4: "normal_colour:Vector",
+        5: "sun_glint:Value",
+        6: "t_seen:Vector",
+        7: "foam_cover:Value",
+        8: "caustics:Factor",
+    }
+    nodes = {
+        "normal_colour": vmath("MULTIPLY_ADD", 30, "n * 0.5 + 0.5", b=(0.5, 0.5, 0.5), c=(0.5, 0.5, 0.5)),
+        "sun": vmath("NORMALIZE", 30, "L"),
+        "sun_reflect": vmath("REFLECT", 31, "reflect(L, n)"),
+        "sun_dot": vmath("DOT_PRODUCT", 32, ". eye"),
+        "sun_max": math("MAXIMUM", 33, "max(, 0)", b=0.0),
+        "sun_glint": math("POWER", 34, "pow(, Glint Power)"),
+        "debug_emit": Node("ShaderNodeEmission", 35, values={"Strength": 1.0}, label="debug view, unlit"),
+        "debug_or_final": Node("ShaderNodeMixShader", 36, label="final, or a debug view"),
+    }
+    links = [
+        ("input:Normal", "normal_colour:#0"),
+        ("input:Sun Direction", "sun:#0"),
+        ("sun:Vector", "sun_reflect:#0"),
+        ("input:Normal", "sun_reflect:#1"),
+        ("sun_reflect:Vector", "sun_dot:#0"),
+        ("geometry:Incoming", "sun_dot:#1"),
+        ("sun_dot:Value", "sun_max:#0"),
+        ("sun_max:Value", "sun_glint:#0"),
+        ("input:Glint Power", "sun_glint:#1"),
+    ]
+    colour, any_view = None, None
+    for number, source in values.items():
+        nodes[f"is_{number}"] = math("COMPARE", 33, f"view == {number}", b=float(number), c=0.5)
+        nodes[f"view_{number}"] = vmath("MULTIPLY_ADD", 34, f"+ view {number}")
+        links += [
+            ("input:Debug View", f"is_{number}:#0"),
+            (source, f"view_{number}:#0"),
+            (f"is_{number}:Value", f"view_{number}:#1"),
+        ]
+        if colour is not None:
+            links.append((colour, f"view_{number}:#2"))
+            nodes[f"any_{number}"] = math("ADD", 34, "a debug view")
+            links += [(any_view, f"any_{number}:#0"), (f"is_{number}:Value", f"any_{number}:#1")]
+            any_view = f"any_{number}:Value"
+        else:
+            any_view = f"is_{number}:Value"
+        colour = f"view_{number}:Vector"
+    links += [
+        (colour, "debug_emit:Color"),
+        (any_view, "debug_or_final:Fac"),
+        ("sides:Shader", "debug_or_final:#1"),
+        ("debug_emit:Emission", "debug_or_final:#2"),
+        ("debug_or_final:Shader", "output:Shader"),
+    ]
+    return nodes, tuple(links)
+
+
+_DEBUG_NODES, _DEBUG_LINKS = _debug_nodes()
+
 FULL_SHADE_SPEC = GroupSpec(
     name=SHADE_NAME,
-    # 2: whitecaps; 3: depth colour, shore foam and caustics from the surroundings; 4: the traced sky
+    # 2: whitecaps; 3: depth colour, shore foam and caustics from the surroundings; 4: the traced
+    # sky and the debug views
     version=4,
     description="Ocean colour: deep blue and the reflected sky by the ocean Fresnel, plus the glint; "
     "white lit foam on the crests; with the surroundings, the bed seen through shallow water, "
@@ -365,6 +447,7 @@ FULL_SHADE_SPEC = GroupSpec(
         # its unlit colour is what the eye sees from above, not a lamp over the bed.
         "see_through": Node("ShaderNodeBsdfTransparent", 32, label="from below: clear"),
         "sides": Node("ShaderNodeMixShader", 33, label="above or below"),
+        **_DEBUG_NODES,
     },
     includes=(water_surface.FOAM_SPEC,),
     parts=PARTS,
@@ -428,7 +511,7 @@ FULL_SHADE_SPEC = GroupSpec(
         ("geometry:Backfacing", "sides:Fac"),
         ("mix:Shader", "sides:#1"),
         ("see_through:BSDF", "sides:#2"),
-        ("sides:Shader", "output:Shader"),
+        *_DEBUG_LINKS,
     ),
 )
 

@@ -74,10 +74,16 @@ def _flat_sea(scene):
     return added, shade
 
 
+def _on_sea(origin, directions, reach=190.0):
+    """Pixels whose ray meets the 400 m sea within `reach` of its centre on both axes."""
+    hits, ok = harness.hit_plane_z(origin, directions)
+    return ok & (np.abs(hits[..., :2]) < reach).all(axis=-1)
+
+
 def _expected(scene, camera):
     """numpy: deep F + sky(reflect(d)) (1 - F), F = dot(-d, n) / 2 + 0.5, on the flat sea."""
     origin, directions = harness.pixel_rays(scene, camera)
-    _hits, ok = harness.hit_plane_z(origin, directions)
+    ok = _on_sea(origin, directions)
     f = (-directions[..., 2] / 2 + 0.5)[..., None]
     reflected_z = np.clip(-directions[..., 2], 0.0, 1.0)[..., None]
     sky = HORIZON + (ZENITH - HORIZON) * reflected_z
@@ -102,7 +108,7 @@ def test_a_procedural_sky_is_reflected_as_it_is(addon, eevee, render, engine):
     spread = expected[on_sea].max(axis=0) - expected[on_sea].min(axis=0)
     assert spread.max() > 0.2, spread
     print(f"{engine}: mean error {error.mean():.4f}, 95th percentile {np.percentile(error, 95):.4f}")
-    assert error.mean() < 0.03 and np.percentile(error, 95) < 0.06
+    assert error.mean() < 0.015 and np.percentile(error, 95) < 0.03
 
 
 def _wavy_sea_under_the_sky_texture(engine_id):
@@ -134,3 +140,36 @@ def test_the_sky_texture_shows_every_wave_in_eevee_and_cycles(addon, eevee, rend
     # The two engines agree on how bright the sea is.
     means = [mean for mean, _step in seen.values()]
     assert max(means) / min(means) < 1.3, seen
+
+
+def test_the_ocean_debug_views_show_f_the_normal_and_the_sun_glint(addon, eevee, render):
+    scene = harness.clean_scene(engine=eevee, width=40, height=24, samples=1)
+    _gradient_world(scene)
+    sun = bpy.data.objects.new("Sun", bpy.data.lights.new("Sun", "SUN"))
+    sun.rotation_euler = (np.radians(70.0), 0.0, np.radians(150.0))  # low, behind the view
+    scene.collection.objects.link(sun)
+    _added, shade = _flat_sea(scene)
+    shade.inputs["Glint Power"].default_value = 8.0
+    camera = harness.add_camera(scene, (0.0, -20.0, 6.0), (0.0, 40.0, 0.0), lens=30.0)
+    scene.camera = camera
+    origin, d = harness.pixel_rays(scene, camera)
+    on_sea = _on_sea(origin, d)
+    light = np.array(sun.matrix_world.to_3x3().col[2]) * -1.0  # the way sunlight travels
+    reflected = light * np.array((1.0, 1.0, -1.0))  # off the flat sea, n = +Z
+    expected = {
+        3: np.repeat((-d[..., 2] / 2 + 0.5)[..., None], 3, axis=-1),
+        4: np.broadcast_to((0.5, 0.5, 1.0), d.shape),
+        5: np.repeat((np.maximum((reflected * -d).sum(axis=-1), 0.0) ** 8.0)[..., None], 3, axis=-1),
+        6: np.zeros(d.shape),  # no surroundings: no bed seen through
+        7: np.zeros(d.shape),
+        8: np.ones(d.shape),  # the caustic factor: 1, nothing changed
+    }
+    final = render(scene, "view-0", exr=True)[..., :3]
+    for number, want in expected.items():
+        shade.inputs["Debug View"].default_value = number
+        got = render(scene, f"view-{number}", exr=True)[..., :3]
+        error = np.abs(got - want)[on_sea]
+        assert error.max() < 0.01, (number, error.max())
+    assert np.ptp(expected[5][on_sea]) > 0.1, "the glint varies over the view"
+    shade.inputs["Debug View"].default_value = 1  # not an ocean view: the final picture
+    assert np.abs(render(scene, "view-1", exr=True)[..., :3] - final).max() < 1e-4

@@ -24,6 +24,7 @@ _OCEAN_INPUTS = (
     ("normal", "Tex Stretch"),
     ("shade", "Deep Color"),
     ("shade", "Glint Power"),
+    ("shade", "Debug View"),
 )
 # The ocean shading's surroundings inputs (as the lake's): absent from groups before version 3.
 _OCEAN_SURROUNDINGS = ("Absorption", "Foam Width", "Foam Amount", "Caustics", "Caustics Scale")
