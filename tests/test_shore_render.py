@@ -4,7 +4,11 @@ modifier measures the bed, the group shades it, in EEVEE and Cycles, with and wi
 `test_depth_foam.py` writes the surroundings' attributes by hand; here nothing is written by hand:
 the bed is in the scene before `add_water`, which gathers it, makes the cache and its modifiers,
 and the renders are held against the bed's analytic plane (Beer-Lambert along the refracted ray).
-The renders are tiny (48 x 48 and 64 x 36, EEVEE 4 samples, Cycles 32), 32-bit EXR.
+The renders are tiny (48 x 48 and 64 x 36, EEVEE 1 sample, 2 in the comparison with Cycles, Cycles
+32), 32-bit EXR: software EEVEE's cost is per sample, hardly per pixel (an EEVEE render of the shore
+takes 4-6 s at 1 sample, 15 s at 4; this module 103 s before, 60 s). At 1 sample the figures held
+are as clear: Debug View 6 within 0.0005 of Beer-Lambert (0.0005 at 4), the same render with and
+without the add-on, the post's foam ring 0.34 and 0.40 where it stands, none where it stood.
 """
 
 import math
@@ -136,6 +140,7 @@ def _timed(label):
 def test_debug_view_6_over_a_white_bed_sloping_from_0_to_5_m(scene, render):
     done = _timed("test 1")
     scene.render.resolution_x = scene.render.resolution_y = 48
+    scene.eevee.taa_render_samples = 1
     harness.set_world_color(scene, (0.05, 0.07, 0.1))
 
     def bed_z(x):
@@ -201,6 +206,7 @@ def test_debug_view_6_over_a_white_bed_sloping_from_0_to_5_m(scene, render):
 def _shore(scene, mirror_setup=True):
     """The lake by a beach with a post, sun lit; returns (water, camera)."""
     scene.render.resolution_x, scene.render.resolution_y = 64, 36
+    scene.eevee.taa_render_samples = 1
     harness.set_world_color(scene, (0.35, 0.5, 0.8))
     sun = bpy.data.objects.new("Sun", bpy.data.lights.new("Sun", "SUN"))
     sun.data.energy = 3.0
@@ -311,6 +317,10 @@ def test_cycles_shows_the_same_depth_colour_and_foam(scene, render):
     """
     done = _timed("test 3")
     water, camera = _shore(scene)
+    # Two EEVEE samples: at one, the foam view is point sampled and covers less of the open water
+    # (0.027 of it above 0.05, under the 0.03 this test asks of the foam); at two the figures are
+    # those measured at four (view 6 0.0006, view 7 0.0092 from Cycles over the open water).
+    scene.eevee.taa_render_samples = 2
     eevee = _views(scene, water, render, "eevee")
     scene.render.engine = "CYCLES"
     scene.cycles.device = "CPU"
@@ -345,6 +355,7 @@ def test_a_keyframed_post_moves_its_foam_ring_between_two_frames(scene, render):
     stands then (the cache measured again by the depsgraph) and none where it stood before."""
     done = _timed("test 5")
     scene.render.resolution_x = scene.render.resolution_y = 64
+    scene.eevee.taa_render_samples = 1
     harness.set_world_color(scene, (0.05, 0.07, 0.1))
     start, end = (-2.5, 1.5), (2.0, -1.5)
     post = _post(scene, harness.emission_material("Post", (1.0, 0.0, 0.0)))
