@@ -32,6 +32,36 @@ FOAM_EDGES = (0.05, 0.3)  # the Ocean modifier's foam (as rendered): none below 
 FOAM_WHITE = (0.85, 0.87, 0.88)
 
 
+# The three taps' slopes at Bump Strength 1, along the grid's x and y: mean squares and their
+# mean product (measured straight down at 5 cm a pixel on the open sea, six 12.8 m patches). The
+# seeds read the second tap at (v, u) without swapping its tilt, so its ripples mirror the
+# first's across the diagonal and the slopes lean along it (correlation 0.53).
+BUMP_SLOPE_COVARIANCE = ((0.01287, 0.00700), (0.00700, 0.01368))
+
+
+def _inverse_square_root(matrix):
+    """M with M C M = I for a symmetric positive 2x2 C: the slopes, multiplied by M, have unit
+    mean squares and no correlation."""
+    (a, b), (_b, d) = matrix
+    half_trace, root = (a + d) / 2, ((a - d) ** 2 / 4 + b * b) ** 0.5
+    values = (half_trace + root, half_trace - root)
+    # Eigenvectors (b, l - a); for b = 0 the axes themselves.
+    vectors = [
+        (b, value - a) if b else ((1.0, 0.0) if i == 0 else (0.0, 1.0)) for i, value in enumerate(values)
+    ]
+    result = [[0.0, 0.0], [0.0, 0.0]]
+    for value, (x, y) in zip(values, vectors, strict=True):
+        length = (x * x + y * y) ** 0.5
+        x, y = x / length, y / length
+        for i, p in enumerate((x, y)):
+            for j, q in enumerate((x, y)):
+                result[i][j] += p * q / value**0.5
+    return result
+
+
+WHITEN = _inverse_square_root(BUMP_SLOPE_COVARIANCE)
+
+
 def _tap(key, column):
     return Node("ShaderNodeTexImage", column, {"extension": "REPEAT", "image": BUMP_IMAGE}, label=key)
 
@@ -40,7 +70,8 @@ NORMAL_SPEC = GroupSpec(
     name=NORMAL_NAME,
     # 2: a mesh without the attribute transforms +Z, never a zero vector: EEVEE before 5.x
     # normalises it into NaN, and the NaN, even weighted by 0, turned the whole ocean black.
-    version=2,
+    # 3: the slopes scale apart along and across the wind (the open sea's Cox and Munk slopes).
+    version=3,
     description="Wave normal plus three bump taps; the direction the eye reflects into",
     inputs=(
         Socket(
@@ -60,6 +91,40 @@ NORMAL_SPEC = GroupSpec(
             tooltip="Bump taps per UV unit (the seeds' 4)",
         ),
         TIME_INPUT,
+        Socket(
+            "Wind Direction",
+            "NodeSocketVector",
+            (1.0, 0.0, 0.0),
+            tooltip="The way the wind blows (x, y; the open sea drives it from its Ocean modifier): "
+            "the bump's slopes along and across it scale apart",
+        ),
+        Socket(
+            "Even Slopes",
+            "NodeSocketFloat",
+            0.0,
+            min=0.0,
+            max=1.0,
+            subtype="FACTOR",
+            tooltip="1: the taps' slopes made the same in every direction, a mean square of 1 each "
+            "way, before the wind scales them (the open sea); 0: combined as the seeds do",
+        ),
+        Socket(
+            "Slope Along Wind",
+            "NodeSocketFloat",
+            1.0,
+            min=0.0,
+            max=10.0,
+            tooltip="The bump's slopes along the wind, times Bump Strength (the open sea drives it "
+            "from the wind speed, as Cox and Munk measured the sea's slopes)",
+        ),
+        Socket(
+            "Slope Across Wind",
+            "NodeSocketFloat",
+            1.0,
+            min=0.0,
+            max=10.0,
+            tooltip="The bump's slopes across the wind, times Bump Strength",
+        ),
     ),
     outputs=(
         Socket("Normal", "NodeSocketVector", tooltip="Shading normal n, world space"),
@@ -102,8 +167,33 @@ NORMAL_SPEC = GroupSpec(
         "sum_12": vmath("ADD", 9),
         "sum_123": vmath("ADD", 10),
         "centre": vmath("ADD", 11, "sum of (tap - 0.5)", b=(-1.5, -1.5, -1.5)),
-        "strength": Node("ShaderNodeCombineXYZ", 11, values={"Z": 1.0}, label="(b, b, 1)"),
-        "tilt": vmath("MULTIPLY", 12, ".rg *= Bump Strength"),
+        # The taps' tilt in the wind's frame, scaled along and across it, and back:
+        # along = m . w, across = m . w_perp, each x Bump Strength x its Slope input.
+        "m": Node("ShaderNodeSeparateXYZ", 11, label="m"),
+        # Even slopes: m.xy + Even Slopes x (WHITEN - I) m.xy.
+        "my_m12": math("MULTIPLY", 11, "m.y M12", b=WHITEN[0][1]),
+        "mx_m12": math("MULTIPLY", 11, "m.x M12", b=WHITEN[0][1]),
+        "dx": math("MULTIPLY_ADD", 12, "(M11 - 1) m.x + M12 m.y", b=WHITEN[0][0] - 1.0),
+        "dy": math("MULTIPLY_ADD", 12, "(M22 - 1) m.y + M12 m.x", b=WHITEN[1][1] - 1.0),
+        "ex": math("MULTIPLY_ADD", 12, "even x"),
+        "ey": math("MULTIPLY_ADD", 12, "even y"),
+        "wind": vmath("NORMALIZE", 9, "w"),
+        "w": Node("ShaderNodeSeparateXYZ", 10, label="w"),
+        "k_along": math("MULTIPLY", 10, "Bump Strength x Slope Along"),
+        "k_across": math("MULTIPLY", 10, "Bump Strength x Slope Across"),
+        "mx_wx": math("MULTIPLY", 12, "m.x w.x"),
+        "along": math("MULTIPLY_ADD", 13, "m . w"),
+        "my_wx": math("MULTIPLY", 12, "m.y w.x"),
+        "mx_wy": math("MULTIPLY", 12, "m.x w.y"),
+        "across": math("SUBTRACT", 13, "m . w_perp"),
+        "along_s": math("MULTIPLY", 14, "along, scaled"),
+        "across_s": math("MULTIPLY", 14, "across, scaled"),
+        "minus_wy": math("MULTIPLY", 11, "-w.y", b=-1.0),
+        "a_wx": math("MULTIPLY", 15, "along w.x"),
+        "a_wy": math("MULTIPLY", 15, "along w.y"),
+        "tilt_x": math("MULTIPLY_ADD", 16, "x = along w.x - across w.y"),
+        "tilt_y": math("MULTIPLY_ADD", 16, "y = along w.y + across w.x"),
+        "tilt": Node("ShaderNodeCombineXYZ", 17, label="tilt"),
         "t": vmath("NORMALIZE", 13, "tangent-space normal"),
         "t_split": Node("ShaderNodeSeparateXYZ", 14),
         # A tangent frame on the wave: B along +X, T = N x B.
@@ -158,10 +248,54 @@ NORMAL_SPEC = GroupSpec(
         ("sum_12:Vector", "sum_123:#0"),
         ("tap_3:Color", "sum_123:#1"),
         ("sum_123:Vector", "centre:#0"),
-        ("input:Bump Strength", "strength:X"),
-        ("input:Bump Strength", "strength:Y"),
-        ("centre:Vector", "tilt:#0"),
-        ("strength:Vector", "tilt:#1"),
+        ("centre:Vector", "m:Vector"),
+        ("input:Wind Direction", "wind:#0"),
+        ("wind:Vector", "w:Vector"),
+        ("input:Bump Strength", "k_along:#0"),
+        ("input:Slope Along Wind", "k_along:#1"),
+        ("input:Bump Strength", "k_across:#0"),
+        ("input:Slope Across Wind", "k_across:#1"),
+        ("m:Y", "my_m12:#0"),
+        ("m:X", "mx_m12:#0"),
+        ("m:X", "dx:#0"),
+        ("my_m12:Value", "dx:#2"),
+        ("m:Y", "dy:#0"),
+        ("mx_m12:Value", "dy:#2"),
+        ("dx:Value", "ex:#0"),
+        ("input:Even Slopes", "ex:#1"),
+        ("m:X", "ex:#2"),
+        ("dy:Value", "ey:#0"),
+        ("input:Even Slopes", "ey:#1"),
+        ("m:Y", "ey:#2"),
+        ("ex:Value", "mx_wx:#0"),
+        ("w:X", "mx_wx:#1"),
+        ("ey:Value", "along:#0"),
+        ("w:Y", "along:#1"),
+        ("mx_wx:Value", "along:#2"),
+        ("ey:Value", "my_wx:#0"),
+        ("w:X", "my_wx:#1"),
+        ("ex:Value", "mx_wy:#0"),
+        ("w:Y", "mx_wy:#1"),
+        ("my_wx:Value", "across:#0"),
+        ("mx_wy:Value", "across:#1"),
+        ("along:Value", "along_s:#0"),
+        ("k_along:Value", "along_s:#1"),
+        ("across:Value", "across_s:#0"),
+        ("k_across:Value", "across_s:#1"),
+        ("w:Y", "minus_wy:#0"),
+        ("along_s:Value", "a_wx:#0"),
+        ("w:X", "a_wx:#1"),
+        ("along_s:Value", "a_wy:#0"),
+        ("w:Y", "a_wy:#1"),
+        ("across_s:Value", "tilt_x:#0"),
+        ("minus_wy:Value", "tilt_x:#1"),
+        ("a_wx:Value", "tilt_x:#2"),
+        ("across_s:Value", "tilt_y:#0"),
+        ("w:X", "tilt_y:#1"),
+        ("a_wy:Value", "tilt_y:#2"),
+        ("tilt_x:Value", "tilt:X"),
+        ("tilt_y:Value", "tilt:Y"),
+        ("m:Z", "tilt:Z"),
         ("tilt:Vector", "t:#0"),
         ("t:Vector", "t_split:Vector"),
         ("N:Vector", "N_split:Vector"),

@@ -14,9 +14,12 @@ aligned with the wind (`wave_alignment`) and the wind direction (x, y) becomes t
 angle atan2(-y, x) (the simulation's z axis is the object's -y).
 """
 
+import bpy
+
 from ..nodes import SPECS, sea_fade
 from ..nodes.builder import ensure_group
-from ..nodes.material import drive_clock
+from ..nodes.material import drive_clock, drive_socket
+from ..nodes.ocean_material import ocean_nodes
 from ..nodes.ownership import role_of
 from .editable import check_editable
 from .sea_math import (
@@ -28,6 +31,7 @@ from .sea_math import (
     SPECTRA,
     WIND_ALIGNMENT,
     ocean_resolution,
+    slope_expressions,
     tile_size,
     wave_angle,
     wave_scale,
@@ -117,7 +121,32 @@ def set_sea(obj, values, scene):
     ocean.wave_scale = wave_scale(wind, ocean.spectrum)
     drive_clock(ocean, scene, prop="time")
     _set_fade(fade, FADE_START_TILES * ocean.spatial_size, FADE_END_TILES * ocean.spatial_size)
+    drive_slopes(obj, ocean, first=found is None)
     obj.update_tag()
+
+
+def drive_slopes(obj, ocean, first=False):
+    """The ocean shading's bump follows the sea's wind: its slopes along and across the wind are
+    Cox and Munk's for the wind speed, its wind direction the modifier's (simple-expression
+    drivers on the modifier's settings, so changing the wind in the panel changes them too).
+    Bump Strength becomes 1 when the sea is made (a multiplier the artist may change after)."""
+    normal = next((nodes[0] for slot in obj.material_slots if (nodes := ocean_nodes(slot.material))), None)
+    if normal is None:
+        return
+    if "Even Slopes" not in normal.inputs:  # a group from before version 3: left as it is
+        return
+    if first:
+        normal.inputs["Bump Strength"].default_value = 1.0
+        normal.inputs["Even Slopes"].default_value = 1.0
+    path = f'modifiers["{bpy.utils.escape_identifier(ocean.name)}"]'
+    speed = [("u", "OBJECT", obj, f"{path}.wind_velocity")]
+    angle = [("a", "OBJECT", obj, f"{path}.wave_direction")]
+    along, across = slope_expressions()
+    drive_socket(normal.inputs["Slope Along Wind"], None, along, speed)
+    drive_socket(normal.inputs["Slope Across Wind"], None, across, speed)
+    # The modifier's angle is atan2(-y, x) of the wind (`wave_angle`).
+    drive_socket(normal.inputs["Wind Direction"], 0, "cos(a)", angle)
+    drive_socket(normal.inputs["Wind Direction"], 1, "-sin(a)", angle)
 
 
 def _set_fade(modifier, start, end):

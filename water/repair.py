@@ -28,6 +28,7 @@ from ..nodes.material import (
 )
 from ..nodes.ocean_material import NORMAL_NODE, OCEAN_NODE, SKY_NODE, fit_shade_parts, ocean_nodes
 from ..nodes.ownership import role_of
+from . import open_sea
 from .editable import NotEditableError, check_editable, why_not_editable
 from .kind import LAKE, OCEAN, shading_of
 
@@ -271,6 +272,11 @@ def repair_water(material, scene=None):
         else:  # the ocean shade: the surroundings' foam and caustics follow the clock and the sun
             drive_clock(node.inputs["Time"], clock_scene)
             drive_sun_inputs(node, sun if sun is not None else first_sun(clock_scene))
+    # An open sea's bump follows its Ocean modifier's wind (drivers by input index, so made again).
+    for obj in bpy.data.objects:
+        found = open_sea.sea_modifiers(obj)
+        if found is not None and any(slot.material == material for slot in obj.material_slots):
+            open_sea.drive_slopes(obj, found[0])
     nodes = ocean_nodes(material)
     if nodes is not None:
         normal, shade = nodes

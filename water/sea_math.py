@@ -83,3 +83,26 @@ def wave_angle(wind_direction):
     """The modifier's `wave_direction` (radians) for a wind direction (x, y) in the object's plane."""
     x, y = wind_direction[0], wind_direction[1]
     return math.atan2(-y, x) if (x or y) else -math.pi / 2  # no direction: +Y, as the lake
+
+
+# Slopes: Cox and Munk (1954) measured the sea's mean square slope (clean surface) as
+# 3.16e-3 U upwind and 0.003 + 1.92e-3 U crosswind at a wind of U m/s. The open sea's shading
+# makes its bump's slopes even (`Even Slopes` 1: a mean square of 1 each way, the Ocean
+# modifier's own slopes being small beside them at 5 cm) and scales them by the square roots of
+# these along and across the wind (`Slope Along Wind`, `Slope Across Wind`).
+COX_MUNK_UPWIND = 3.16e-3  # per m/s
+COX_MUNK_CROSSWIND = (0.003, 1.92e-3)  # constant, per m/s
+
+
+def cox_munk_slopes(wind_speed):
+    """(upwind, crosswind) mean square slopes of a clean sea at `wind_speed` m/s (Cox and Munk)."""
+    return COX_MUNK_UPWIND * wind_speed, COX_MUNK_CROSSWIND[0] + COX_MUNK_CROSSWIND[1] * wind_speed
+
+
+def slope_expressions():
+    """Simple-expression drivers (variable `u`, the wind speed) for `Slope Along Wind` and
+    `Slope Across Wind`: the square roots of Cox and Munk's mean square slopes."""
+    return (
+        f"sqrt({COX_MUNK_UPWIND:g} * u)",
+        f"sqrt({COX_MUNK_CROSSWIND[0]:g} + {COX_MUNK_CROSSWIND[1]:g} * u)",
+    )
