@@ -46,6 +46,7 @@ def _add(scene, **values):
     return added.object
 
 
+@pytest.mark.lts
 def test_the_default_lake_computes_no_part_and_the_full_one_all(scene):
     lake = _add(scene)
     nodes = _flat_nodes(lake.active_material.node_tree)
@@ -133,6 +134,7 @@ def test_undo_puts_the_part_back(scene):
     assert _parts(bpy.data.objects["Water"]) == set()
 
 
+@pytest.mark.lts
 def test_a_switch_that_moves_keeps_its_part(scene):
     lake = _add(scene)
     material = lake.active_material
@@ -209,6 +211,8 @@ def shore(addon, eevee):
     return {"scene": scene, "water": added.object, "material": added.material}
 
 
+@pytest.mark.lts
+@pytest.mark.render
 def test_a_part_at_zero_renders_as_the_part_left_out(shore, render):
     scene, material = shore["scene"], shore["material"]
     node = _material().water_node(material)
@@ -228,6 +232,7 @@ def test_a_part_at_zero_renders_as_the_part_left_out(shore, render):
     assert node.node_tree.name == "Water Surface"
 
 
+@pytest.mark.render
 def test_saved_with_parts_on_or_off_renders_the_same_without_the_add_on(
     shore, render, tmp_path, addon_disabled_afterwards
 ):

@@ -90,6 +90,7 @@ def _expected(scene, camera):
     return DEEP * f + sky * (1 - f), ok
 
 
+@pytest.mark.lts
 @pytest.mark.parametrize("engine", ["eevee", "CYCLES"])
 def test_a_procedural_sky_is_reflected_as_it_is(addon, eevee, render, engine):
     scene = harness.clean_scene(

@@ -56,6 +56,7 @@ def test_the_sea_s_slopes_are_cox_and_munk_s_upwind_larger(addon, eevee, render,
     )
 
 
+@pytest.mark.lts
 def test_the_slopes_follow_the_wind_set_in_the_panel(scene):
     added = _api().add_water(scene, preset="open_sea", sea_wind_speed=5.0, see_surroundings=False)
     normal, _shade = harness.addon("nodes.ocean_material").ocean_nodes(added.material)
