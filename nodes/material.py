@@ -44,14 +44,16 @@ def water_group(image=None, parts=()):
 
 def retire_legacy_groups():
     """Gives the `Water Surface` groups of files saved before the parts were optional (version 4
-    and older: every part built in) the role and name of the variant with every part, so the
-    lean group takes their old name and their materials render as they did."""
+    and older, built with the parts of their day: a node keyed "depth", "foam" or "caustics") the
+    role and name of the variant with every part, so the lean group takes their old name and their
+    materials render as they did (the builder upgrades them in place when that variant is asked for)."""
     full = water_surface.spec_with(water_surface.ALL_PARTS).name
     for tree in bpy.data.node_groups:
         version = tree.get(VERSION_KEY)
         if role_of(tree) != water_surface.NAME or not isinstance(version, int) or version >= 5:
             continue
-        if not is_original(tree):
+        # Only a group built with parts: repair stamps a broken lean group 0 to rebuild it.
+        if not is_original(tree) or not any(part.name in tree.nodes for part in water_surface.PARTS):
             continue
         # "Water Surface (image).001" becomes "<full> (image)": the image's part of the name stays.
         rest = tree.name[len(water_surface.NAME) :] if tree.name.startswith(water_surface.NAME) else ""

@@ -199,3 +199,20 @@ def test_an_ocean_whose_group_lost_a_socket_shows_repair_and_is_repaired(scene):
     driven = [tree.path_resolve(f.data_path.rpartition(".")[0]) for f in tree.animation_data.drivers]
     assert [socket.name for socket in driven if socket.node == normal] == ["Time"]
     assert "Deep Color" in _props(draw_panel())
+
+
+def test_repairing_one_of_two_waters_gives_the_other_the_lost_input_s_default(scene):
+    api = harness.addon("api")
+    first = api.add_water(scene, see_surroundings=False, mirror_setup=False)
+    second = api.add_water(scene, see_surroundings=False, mirror_setup=False, location=(200.0, 0.0, 0.0))
+    material = harness.addon("nodes.material")
+    a, b = material.water_node(first.material), material.water_node(second.material)
+    assert a.node_tree == b.node_tree, "one group shared"
+    b.inputs["Wave Height"].default_value = 0.45
+    _remove_input(a.node_tree, "Wave Length")
+    harness.addon("water.repair").repair_water(first.material, scene)
+    bpy.context.view_layer.update()
+    assert a.node_tree == b.node_tree and harness.addon("water.repair").needs_repair(second.material) is None
+    # Blender gives a socket added back to a shared group 0 on the other nodes: the default here.
+    assert b.inputs["Wave Length"].default_value == pytest.approx(0.1)
+    assert b.inputs["Wave Height"].default_value == pytest.approx(0.45), "the other's own values stay"

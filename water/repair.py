@@ -173,12 +173,45 @@ def _target_group(node, spec, image_source):
         return ensure_group(spec, SPECS, image=image)
 
     target = build()
-    if _missing(target, spec):
+    missing = _missing(target, spec)
+    if missing:
         check_editable(target)
+        others = _other_users(target, node)
         # Version 0 keeps the add-on's mark: the builder upgrades it in place, interface and nodes.
         target[VERSION_KEY] = 0
         target = build()
+        _defaults_on_others(target, others, missing)
     return target
+
+
+def _other_users(tree, node):
+    """[(material, group node name)] of the materials other than `node`'s that use `tree`."""
+    return [
+        (material, other.name)
+        for material in bpy.data.materials
+        if material.node_tree is not None
+        for other in material.node_tree.nodes
+        if other.type == "GROUP" and other.node_tree == tree and other != node
+    ]
+
+
+def _defaults_on_others(tree, others, names):
+    """The inputs `names` a shared group got back: their default on every other material using it
+    (Blender gives a socket added to a group 0 on the nodes already using it)."""
+    defaults = {
+        item.name: item.default_value
+        for item in tree.interface.items_tree
+        if item.item_type == "SOCKET" and item.in_out == "INPUT" and item.name in names
+    }
+    for material, name in others:
+        material.node_tree.update_tag()
+    bpy.context.view_layer.update()  # the group nodes take the rebuilt interface
+    for material, name in others:
+        other = material.node_tree.nodes.get(name)
+        for socket_name, value in defaults.items():
+            socket = other.inputs.get(socket_name) if other is not None else None
+            if socket is not None and not socket.is_linked:
+                socket.default_value = value
 
 
 def _restore(node, kept, driven):
