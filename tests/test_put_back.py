@@ -229,3 +229,17 @@ def test_light_linking_the_add_on_made_stays_while_it_holds_the_users_own_links(
     _api().remove_water(b, scene)
     assert sun.light_linking.receiver_collection == receivers  # it holds the user's link: kept
     assert [o.name for o in receivers.objects] == ["Lamp Post"]
+
+
+def test_an_object_floated_after_physical_caustics_is_no_receiver_any_more(pool):
+    scene, _sun, bed, a, _b = pool
+    buoy = harness.add_cube(scene, (-5.0, 0.5, -0.2), size=0.6, name="Buoy")
+    harness.addon("api").set_surroundings(a, scene=scene)  # gathers the buoy too: it reaches below
+    _api().set_physical_caustics(a, True, scene=scene)
+    assert buoy.cycles.is_caustics_receiver and bed.cycles.is_caustics_receiver
+    changes = _api().float_on_water(buoy, a)
+    assert not buoy.cycles.is_caustics_receiver, changes
+    assert any("receiver 'Buoy'" in change for change in changes)
+    assert bed.cycles.is_caustics_receiver, "the bed still receives"
+    _api().set_physical_caustics(a, False, scene=scene)
+    assert not bed.cycles.is_caustics_receiver and not buoy.cycles.is_caustics_receiver

@@ -12,7 +12,7 @@ four sines (`Water Waves`) or the open sea's Ocean modifier.
 import bpy
 from mathutils import Vector
 
-from . import surroundings
+from . import physical_caustics, surroundings
 from .editable import check_editable
 from .float_constraints import FLOAT, TILT, float_constraints, floating_on, forget, remember
 from .float_constraints import constraint as constraint_for
@@ -81,6 +81,7 @@ def float_on_water(obj, water, tilt_damping=0.0):
         changes = surroundings.leave_out(water, obj)
     except surroundings.SurroundingsError as error:
         raise FloatError(str(error)) from error
+    changes += physical_caustics.let_go_of_receiver(water, obj)  # out of the surroundings: no receiver
     tilt = _shrinkwrap(obj, "tilt", TILT, water)
     tilt.use_track_normal = True
     tilt.track_axis = "TRACK_Z"

@@ -136,3 +136,15 @@ def disable(water, scene):
         release(material, _shader_path(material), holder, "shader Caustics", changes)
         fit_parts(material)  # the shader's caustics back in when their value came back
     return changes
+
+
+def let_go_of_receiver(water, obj):
+    """`obj` no longer receives `water`'s physical caustics (it floats on it now, out of its
+    surroundings): its receiver flag goes back when no other water holds it. Returns the changes."""
+    changes = []
+    release(obj, RECEIVER, _holder(water), f"receiver '{obj.name}'", changes, _alive)
+    if is_on(water) and STATE_KEY in water.keys():
+        state = json.loads(water[STATE_KEY])
+        state["receivers"] = [name for name in state.get("receivers", ()) if name != obj.name]
+        water[STATE_KEY] = json.dumps(state)
+    return changes
