@@ -243,3 +243,18 @@ def test_an_object_floated_after_physical_caustics_is_no_receiver_any_more(pool)
     assert bed.cycles.is_caustics_receiver, "the bed still receives"
     _api().set_physical_caustics(a, False, scene=scene)
     assert not bed.cycles.is_caustics_receiver and not buoy.cycles.is_caustics_receiver
+
+
+def test_a_renamed_water_still_holds_what_it_changed(pool):
+    scene, _sun, _bed, a, b = pool
+    _api().set_physical_caustics(a, True, scene=scene)
+    _api().set_physical_caustics(b, True, scene=scene)
+    a.name = "Renamed A"
+    # B lets go first: A, renamed, still needs the raised bounces and refractive caustics.
+    _api().set_physical_caustics(b, False, scene=scene)
+    assert scene.cycles.transmission_bounces == 8 and scene.cycles.caustics_refractive
+    # Saving prunes holders whose water is gone: the renamed one is not gone.
+    harness.addon("water.removal").remove_leftovers()
+    assert scene.cycles.transmission_bounces == 8
+    _api().set_physical_caustics(a, False, scene=scene)
+    assert scene.cycles.transmission_bounces == 3 and not scene.cycles.caustics_refractive

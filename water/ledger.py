@@ -17,7 +17,32 @@ import json
 import bpy
 
 LEDGER_KEY = "water_surface_ledger"
+# On a water: the name its ledger holders carry ("mirror:<it>"), the name it had at its first
+# claim, so a water renamed since still finds what it holds.
+HOLDER_KEY = "water_surface_holder"
 _COLLECTIONS = {"WORLD": "worlds", "OBJECT": "objects", "COLLECTION": "collections"}
+
+
+def holder(kind, water, stamp=True):
+    """The holder `water` claims settings as for `kind` ("mirror", "caustics"): "kind:<name>",
+    the name the water had at its first claim (`stamp` notes it on the water then)."""
+    key = water.get(HOLDER_KEY)
+    if not isinstance(key, str):
+        key = water.name
+        if stamp and water.library is None:
+            water[HOLDER_KEY] = key
+    return f"{kind}:{key}"
+
+
+def holder_object(holder_name):
+    """The water a holder names (found by the name it noted, or, for holders written before the
+    note existed, by its name), or None."""
+    key = holder_name.partition(":")[2]
+    noted = next((o for o in bpy.data.objects if o.get(HOLDER_KEY) == key), None)
+    if noted is not None:
+        return noted
+    named = bpy.data.objects.get(key)
+    return named if named is not None and named.get(HOLDER_KEY, key) == key else None
 
 
 def _load(block):

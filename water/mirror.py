@@ -22,7 +22,8 @@ from ..nodes.material import glint_sun
 from ..nodes.ownership import is_original, mark, owned
 from . import kind, sun_link
 from .editable import check_editable
-from .ledger import claim, held_paths, holders, release
+from .ledger import claim, held_paths, holder_object, holders, release
+from .ledger import holder as ledger_holder
 from .repair import needs_repair
 from .values import water_material
 from .waves import amplitude_sum, wave_modifier
@@ -171,13 +172,13 @@ def sky_world():
     return world, True
 
 
-def _holder(water):
-    return f"mirror:{water.name}"
+def _holder(water, stamp=True):
+    return ledger_holder("mirror", water, stamp)
 
 
 def _holds_mirror(holder):
     """Whether the water named in `holder` still has its mirror set-up (it is still water)."""
-    water = bpy.data.objects.get(holder.partition(":")[2])
+    water = holder_object(holder)
     return water is not None and water_material(water) is not None and bool(water.users_scene)
 
 
@@ -186,7 +187,7 @@ def release_mirror(scene, water):
     world): each goes back only when it still holds the add-on's value and no other water in the
     file needs it; the sun's light linking lets go of the water. Returns the changes in words."""
     changes = []
-    holder = _holder(water)
+    holder = _holder(water, stamp=False)
     for path in held_paths(scene, holder):
         release(scene, path, holder, path.rpartition(".")[2].replace("_", " "), changes, _holds_mirror)
     sun_link.release_everywhere(water)

@@ -17,7 +17,8 @@ import bpy
 from ..nodes.material import first_sun, fit_parts, glint_sun, water_node
 from . import kind
 from .editable import check_editable
-from .ledger import claim, release
+from .ledger import claim, holder_object, release
+from .ledger import holder as ledger_holder
 from .surroundings import surroundings_collection
 from .values import water_material
 
@@ -37,8 +38,8 @@ def is_on(water):
     return water is not None and STATE_KEY in water
 
 
-def _holder(water):
-    return f"caustics:{water.name}"
+def _holder(water, stamp=True):
+    return ledger_holder("caustics", water, stamp)
 
 
 def _shader_path(material):
@@ -106,7 +107,7 @@ def enable(water, scene):
 
 def _alive(holder):
     """Whether the water named in `holder` still has its physical caustics on."""
-    return is_on(bpy.data.objects.get(holder.partition(":")[2]))
+    return is_on(holder_object(holder))
 
 
 def disable(water, scene):
@@ -117,7 +118,7 @@ def disable(water, scene):
     check_editable(water)
     state = json.loads(water[STATE_KEY])
     del water[STATE_KEY]
-    holder, changes = _holder(water), []
+    holder, changes = _holder(water, stamp=False), []
     release(water, "cycles.is_caustics_caster", holder, f"'{water.name}' caustics caster", changes)
     release(water, "visible_shadow", holder, f"'{water.name}' casts shadows", changes)
     if state.get("flat") and all(p.use_smooth for p in water.data.polygons):
@@ -142,7 +143,7 @@ def let_go_of_receiver(water, obj):
     """`obj` no longer receives `water`'s physical caustics (it floats on it now, out of its
     surroundings): its receiver flag goes back when no other water holds it. Returns the changes."""
     changes = []
-    release(obj, RECEIVER, _holder(water), f"receiver '{obj.name}'", changes, _alive)
+    release(obj, RECEIVER, _holder(water, stamp=False), f"receiver '{obj.name}'", changes, _alive)
     if is_on(water) and STATE_KEY in water.keys():
         state = json.loads(water[STATE_KEY])
         state["receivers"] = [name for name in state.get("receivers", ()) if name != obj.name]

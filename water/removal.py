@@ -175,10 +175,12 @@ def remove_leftovers():
 
 def _held_by(scene, water):
     """Whether `scene` has settings the add-on changed for `water` (its mirror set-up or caustics)."""
-    return any(ledger.held_paths(scene, f"{kind}:{water.name}") for kind in ("mirror", "caustics"))
+    return any(
+        ledger.held_paths(scene, ledger.holder(kind, water, stamp=False)) for kind in ("mirror", "caustics")
+    )
 
 
 def _holder_alive(holder):
     """Whether the water a ledger holder ("mirror:Water", "caustics:Water") names is still water."""
-    water = bpy.data.objects.get(holder.partition(":")[2])
+    water = ledger.holder_object(holder)
     return water is not None and water_material(water) is not None and not _deleted(water)
