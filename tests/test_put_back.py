@@ -258,3 +258,20 @@ def test_a_renamed_water_still_holds_what_it_changed(pool):
     assert scene.cycles.transmission_bounces == 8
     _api().set_physical_caustics(a, False, scene=scene)
     assert scene.cycles.transmission_bounces == 3 and not scene.cycles.caustics_refractive
+
+
+def test_a_water_deleted_the_ordinary_way_leaves_the_users_receivers(scene, tmp_path):
+    sun = _sun(scene)
+    mine = bpy.data.collections.new("My Receivers")
+    mine.objects.link(harness.add_cube(scene, (9.0, 0.0, 1.0), name="Lit"))
+    sun.light_linking.receiver_collection = mine
+    water = _api().add_water(scene, size=8, resolution=8, see_surroundings=False).object
+    assert water.name in mine.objects
+    name = water.name
+    bpy.ops.object.select_all(action="DESELECT")
+    water.select_set(True)
+    bpy.context.view_layer.objects.active = water
+    assert bpy.ops.object.delete() == {"FINISHED"}
+    bpy.ops.wm.save_as_mainfile(filepath=str(tmp_path / "deleted.blend"))  # save runs the clean-up
+    assert name not in bpy.data.objects and [o.name for o in mine.objects] == ["Lit"]
+    assert sun.light_linking.receiver_collection == mine

@@ -142,11 +142,12 @@ def remove_water(water, scene=None):
 
 def _deleted(obj):
     """Whether `obj` is a water the user deleted: in no scene, kept alive only by the add-on's
-    light-linking collections or the constraints of what floated on it (no fake user, no
-    collection of the user's)."""
+    light linking (its collections, or a user's receiver collection it linked the water into) or
+    the constraints of what floated on it (no fake user, no other collection of the user's)."""
     if obj.library is not None or obj.use_fake_user or obj.users_scene or water_material(obj) is None:
         return False
-    return all(sun_link.is_own_receivers(c) for c in obj.users_collection)
+    linked = sun_link.linked_by_add_on(obj)
+    return all(sun_link.is_own_receivers(c) or c.name in linked for c in obj.users_collection)
 
 
 def remove_leftovers():

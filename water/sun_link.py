@@ -13,6 +13,20 @@ import bpy
 from ..nodes.ownership import is_local, is_original, mark
 
 OWNER_KEY = "water_surface_light_linking"  # marks a receiver collection the add-on made
+# On a water: the names of the user's receiver collections the add-on linked it into (so a water
+# the user deletes is known to be held only by the add-on's doing there).
+LINKED_KEY = "water_surface_linked_into"
+
+
+def linked_by_add_on(water):
+    """Names of the user's receiver collections the add-on linked `water` into."""
+    names = water.get(LINKED_KEY)
+    return [str(name) for name in names] if names is not None else []
+
+
+def _note_linked(water, collection, linked):
+    names = [name for name in linked_by_add_on(water) if name != collection.name]
+    water[LINKED_KEY] = names + [collection.name] if linked else names
 
 
 def eevee_honours_light_linking():
@@ -56,6 +70,8 @@ def exclude_water(water, sun):
     if entry is None:
         collection.objects.link(water)
         entry = _entry(collection, water)
+        if not is_own_receivers(collection):
+            _note_linked(water, collection, True)
     if entry.light_linking.link_state == "EXCLUDE" and not changes:
         return []
     entry.light_linking.link_state = "EXCLUDE"
@@ -73,6 +89,8 @@ def release_water(water, sun):
     if collection is None or collection.library is not None or _entry(collection, water) is None:
         return
     collection.objects.unlink(water)
+    if collection.name in linked_by_add_on(water):
+        _note_linked(water, collection, False)
     if is_own_receivers(collection) and not collection.objects and not collection.children:
         sun.light_linking.receiver_collection = None
         if collection.users == 0:
