@@ -403,6 +403,9 @@ SHADE_INPUTS = (
     ),
 )
 TRACED_SKY = "Traced Sky"
+# The traced sky's roughness: the ripples finer than a pixel. Sharp (0), EEVEE draws a sun lamp's
+# highlight four times as bright as Cycles over the shallows and white over what should be sand.
+TRACED_ROUGHNESS = 0.05
 # The ocean's debug views: the lake's numbers for what the ocean shading has (1 and 2, the lake's
 # closures alone, show the final picture here).
 DEBUG_VIEWS = (
@@ -527,7 +530,7 @@ FULL_SHADE_SPEC = GroupSpec(
             "ShaderNodeBsdfAnisotropic",
             30,
             {"distribution": "GGX"},
-            {"Roughness": 0.0},
+            {"Roughness": TRACED_ROUGHNESS},
             label="the world reflected",
             part="traced_sky",
         ),

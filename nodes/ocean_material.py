@@ -3,11 +3,11 @@ direction, and the ocean colour (groups in `ocean.py`), with the open sea's
 whitecaps where the mesh carries them.
 
 The sky is the world's environment image when it has one (an Environment
-Texture node in the material, as the seeds sample their sky cube). Any other world (Blender's
-Sky Texture, a gradient, a plain colour) is reflected by the renderer itself: the shade's
+Texture node in the material, as the seeds sample their sky cube), or its one colour when it is
+plain. Any other world (Blender's Sky Texture, a gradient) is reflected by the renderer itself: the shade's
 "+ Traced Sky" variant adds a sharp Glossy closure at the sky's weight, so every wave shows
-whatever the sky is, in EEVEE and Cycles (the Sky node then holds the world's background
-colour, followed by simple-expression drivers, and weighs nothing). The shade's clock and sun (for the
+whatever the sky is, in EEVEE and Cycles. A plain colour is followed by simple-expression
+drivers (the Sky node), so a changed colour shows without running anything. The shade's clock and sun (for the
 surroundings' foam and caustics) are drivers too, as the lake's.
 """
 
@@ -43,6 +43,19 @@ def _world_environment(world):
     )
 
 
+def _plain_world(world):
+    """Whether `world` is one colour in every direction (no world, no nodes, or a Background
+    whose colour nothing feeds): the Sky node's driven colour is then exactly what it reflects."""
+    if world is None or world.node_tree is None:
+        return True
+    backgrounds = [n for n in world.node_tree.nodes if n.type == "BACKGROUND"]
+    output = next((n for n in world.node_tree.nodes if n.type == "OUTPUT_WORLD"), None)
+    if output is None or not output.inputs["Surface"].is_linked:
+        return True
+    feeding = output.inputs["Surface"].links[0].from_node
+    return feeding in backgrounds and not feeding.inputs["Color"].is_linked
+
+
 def _sky_node(tree, world):
     """A node giving the sky's colour: the world's image, or its background colour."""
     environment = _world_environment(world)
@@ -71,8 +84,8 @@ def make_ocean_material(name="Ocean", scene=None):
     scene = scene or bpy.context.scene
     normal_group = ensure_group(SPECS[ocean.NORMAL_NAME], SPECS, image=ensure_bump_image())
     # A world with an image is looked up as the seeds look their sky cube up; any other world
-    # (Sky Texture, a gradient, a colour) is reflected by the renderer (the traced sky).
-    traced = _world_environment(scene.world) is None
+    # (Sky Texture, a gradient) is reflected by the renderer (the traced sky); a plain colour is exact.
+    traced = _world_environment(scene.world) is None and not _plain_world(scene.world)
     shade_group = ensure_group(ocean.FULL_SHADE_SPEC.variant({"traced_sky"} if traced else ()), SPECS)
     material = new_node_material(name)
     tree = material.node_tree
