@@ -174,3 +174,35 @@ def test_the_ocean_debug_views_show_f_the_normal_and_the_sun_glint(addon, eevee,
     assert np.ptp(expected[5][on_sea]) > 0.1, "the glint varies over the view"
     shade.inputs["Debug View"].default_value = 1  # not an ocean view: the final picture
     assert np.abs(render(scene, "view-1", exr=True)[..., :3] - final).max() < 1e-4
+
+
+@pytest.mark.lts
+def test_a_traced_sky_sea_with_a_float_renders_the_same_without_the_add_on(
+    addon, eevee, render, tmp_path, addon_disabled_afterwards
+):
+    """The traced sky with the rest: an open sea under the gradient sky, its surroundings (a
+    bed), a buoy floating on it; saved, reopened without the add-on and auto-run off, the same."""
+    import addon_utils
+
+    scene = harness.clean_scene(engine="CYCLES", width=32, height=20, samples=2)
+    _gradient_world(scene)
+    harness.add_cube(scene, (0.0, 10.0, -3.0), size=6.0, name="Bed")
+    added = harness.addon("api").add_water(scene, preset="open_sea", sea_wind_speed=6.0)
+    _normal, shade = harness.addon("nodes.ocean_material").ocean_nodes(added.material)
+    assert shade.node_tree.name == "Water Ocean Shade + Traced Sky"
+    buoy = harness.add_cube(scene, (1.0, 6.0, 0.0), size=0.8, name="Buoy")
+    harness.addon("api").float_on_water(buoy, added.object)
+    camera = harness.add_camera(scene, (0.0, -6.0, 4.0), (0.0, 8.0, 0.0), lens=30.0)
+    camera.data.clip_end = 20000.0
+    scene.camera = camera
+    scene.frame_set(12)
+    path = tmp_path / "traced.blend"
+    bpy.ops.wm.save_as_mainfile(filepath=str(path))
+    before = render(scene, "with-addon", exr=True)[..., :3]
+    addon_utils.disable(harness.ADDON_MODULE, default_set=True)
+    bpy.context.preferences.filepaths.use_scripts_auto_execute = False
+    bpy.ops.wm.open_mainfile(filepath=str(path), load_ui=False, use_scripts=False)
+    bpy.context.scene.frame_set(1)
+    bpy.context.scene.frame_set(12)
+    after = render(bpy.context.scene, "without-addon", exr=True)[..., :3]
+    assert np.abs(after - before).mean() < 0.01, np.abs(after - before).mean()
