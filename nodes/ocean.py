@@ -4,7 +4,8 @@
 `Water Waves` modifier stores, or the surface normal without it) by three taps
 of the bump map and gives the direction the eye reflects into. The material
 looks the sky up in that direction (the world's environment image, or its
-colour) and hands it to `Water Ocean Shade`:
+colour) and hands it to `Water Ocean Shade` (any other world the shade's "+ Traced Sky" variant
+reflects with a Glossy closure instead):
 `F = dot(-eye, n) / 2 + 0.5`, `deep * F + sky * (1 - F) + pow(mean(sky), Glint Power)`,
 unlit, as the seeds draw it. Where the mesh carries foam (the open sea's
 Ocean modifier, `sea_fade.py`) the crests turn to white foam lit by the scene.
@@ -437,32 +438,22 @@ def _debug_nodes():
     values = {
         3: "F:Value",
         4: "normal_colour:Vector",
-        5: "sun_glint:Value",
+        5: "glint_pow:Value",
         6: "t_seen:Vector",
         7: "foam_cover:Value",
         8: "caustics:Factor",
     }
     nodes = {
         "normal_colour": vmath("MULTIPLY_ADD", 30, "n * 0.5 + 0.5", b=(0.5, 0.5, 0.5), c=(0.5, 0.5, 0.5)),
-        "sun": vmath("NORMALIZE", 30, "L"),
-        "sun_reflect": vmath("REFLECT", 31, "reflect(L, n)"),
-        "sun_dot": vmath("DOT_PRODUCT", 32, ". eye"),
-        "sun_max": math("MAXIMUM", 33, "max(, 0)", b=0.0),
-        "sun_glint": math("POWER", 34, "pow(, Glint Power)"),
         "debug_emit": Node("ShaderNodeEmission", 35, values={"Strength": 1.0}, label="debug view, unlit"),
         "debug_or_final": Node("ShaderNodeMixShader", 36, label="final, or a debug view"),
     }
     links = [
         ("input:Normal", "normal_colour:#0"),
-        ("input:Sun Direction", "sun:#0"),
-        ("sun:Vector", "sun_reflect:#0"),
-        ("input:Normal", "sun_reflect:#1"),
-        ("sun_reflect:Vector", "sun_dot:#0"),
-        ("geometry:Incoming", "sun_dot:#1"),
-        ("sun_dot:Value", "sun_max:#0"),
-        ("sun_max:Value", "sun_glint:#0"),
-        ("input:Glint Power", "sun_glint:#1"),
     ]
+    glint, glint_links = water_surface.glint_nodes("input:Normal", "input:Glint Power", column=30)
+    nodes |= glint
+    links += glint_links
     colour, any_view = None, None
     for number, source in values.items():
         nodes[f"is_{number}"] = math("COMPARE", 33, f"view == {number}", b=float(number), c=0.5)

@@ -410,6 +410,30 @@ def transmittance_nodes():
     return nodes, links
 
 
+def glint_nodes(normal, power, column=15):
+    """The sun's glint lobe `pow(max(dot(reflect(L, n), eye), 0), power)` ("glint_pow:Value"), L
+    the group's `Sun Direction`, n the socket `normal`, `power` a socket; needs a "geometry"
+    node. Shared with the ocean shading's glint view."""
+    nodes = {
+        "sun": vmath("NORMALIZE", column, "L"),
+        "reflect": vmath("REFLECT", column + 1, "reflect(L, n)"),
+        "glint_dot": vmath("DOT_PRODUCT", column + 2, ". eye"),
+        "glint_max": math("MAXIMUM", column + 3, "max(, 0)", b=0.0),
+        "glint_pow": math("POWER", column + 4, f"pow(, {power.partition(':')[2]})"),
+    }
+    links = [
+        ("input:Sun Direction", "sun:#0"),
+        ("sun:Vector", "reflect:#0"),
+        (normal, "reflect:#1"),
+        ("reflect:Vector", "glint_dot:#0"),
+        ("geometry:Incoming", "glint_dot:#1"),
+        ("glint_dot:Value", "glint_max:#0"),
+        ("glint_max:Value", "glint_pow:#0"),
+        (power, "glint_pow:#1"),
+    ]
+    return nodes, links
+
+
 def _depth_nodes():
     """The transmittance `T`, and the light the water scatters back, `Scatter Color * (1 - T)`."""
     nodes, links = transmittance_nodes()
@@ -516,6 +540,7 @@ def _in_part(name, nodes):
 _LAYER_NODES, _LAYER_LINKS = _layer_nodes()
 _WEIGHT_NODES, _WEIGHT_LINKS = _weight_nodes()
 _DEPTH_NODES, _DEPTH_LINKS = _depth_nodes()
+_GLINT_NODES, _GLINT_LINKS = glint_nodes("normal_s:Normal", "input:Specular Power")
 
 FULL_SPEC = GroupSpec(
     name=NAME,
@@ -560,11 +585,7 @@ FULL_SPEC = GroupSpec(
         "fresnel": math("MULTIPLY", 16, "F = clamp(eye . n)", clamp=True, b=1.0),
         "normal_colour": vmath("MULTIPLY_ADD", 16, "n * 0.5 + 0.5", b=(0.5, 0.5, 0.5), c=(0.5, 0.5, 0.5)),
         # Glint: Sun Color * Specular Strength * pow(max(dot(reflect(L, n), eye), 0), Specular Power).
-        "sun": vmath("NORMALIZE", 15, "L"),
-        "reflect": vmath("REFLECT", 16, "reflect(L, n)"),
-        "glint_dot": vmath("DOT_PRODUCT", 17, ". eye"),
-        "glint_max": math("MAXIMUM", 18, "max(, 0)", b=0.0),
-        "glint_pow": math("POWER", 19, "pow(, Specular Power)"),
+        **_GLINT_NODES,
         "glint": math("MULTIPLY", 20, "* Specular Strength"),
         "glint_color": vmath("SCALE", 21, "* Sun Color"),
         **_in_part("depth", _DEPTH_NODES),
@@ -654,14 +675,7 @@ FULL_SPEC = GroupSpec(
         ("normal_s:Normal", "eye_dot_n:#1"),
         ("eye_dot_n:Value", "fresnel:#0"),
         ("normal_s:Normal", "normal_colour:#0"),
-        ("input:Sun Direction", "sun:#0"),
-        ("sun:Vector", "reflect:#0"),
-        ("normal_s:Normal", "reflect:#1"),
-        ("reflect:Vector", "glint_dot:#0"),
-        ("geometry:Incoming", "glint_dot:#1"),
-        ("glint_dot:Value", "glint_max:#0"),
-        ("glint_max:Value", "glint_pow:#0"),
-        ("input:Specular Power", "glint_pow:#1"),
+        *_GLINT_LINKS,
         ("glint_pow:Value", "glint:#0"),
         ("input:Specular Strength", "glint:#1"),
         ("input:Sun Color", "glint_color:#0"),

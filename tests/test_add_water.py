@@ -175,7 +175,7 @@ def test_panel_sections_name_real_group_inputs(addon):
             if name.startswith("part:"):
                 part = name[len("part:") :]
                 assert part in {p.name for p in harness.addon("nodes.water_surface").PARTS}
-                assert set(panel._PARTS[part][1]) <= inputs
+                assert set(panel._PARTS[part]) <= inputs
             else:
                 assert name in inputs
 

@@ -7,7 +7,6 @@ water, repair, physical caustics); values and drivers survive the swap; a switch
 keep rendering as they did; and a part at 0 renders exactly as the part left out.
 """
 
-import addon_utils
 import bpy
 import numpy as np
 import pytest
@@ -249,8 +248,5 @@ def test_saved_with_parts_on_or_off_renders_the_same_without_the_add_on(
     bpy.ops.wm.save_as_mainfile(filepath=str(path))
     before = render(scene, "with-addon", exr=True)[..., :3]
 
-    addon_utils.disable(harness.ADDON_MODULE, default_set=True)
-    bpy.context.preferences.filepaths.use_scripts_auto_execute = False
-    bpy.ops.wm.open_mainfile(filepath=str(path), load_ui=False, use_scripts=False)
-    after = render(bpy.context.scene, "without-addon", exr=True)[..., :3]
+    after = render(harness.reopen_without_add_on(path), "without-addon", exr=True)[..., :3]
     assert np.abs(after - before).max() < 2e-3, np.abs(after - before).max()

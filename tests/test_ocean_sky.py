@@ -19,14 +19,20 @@ ZENITH = np.array((0.1, 0.25, 0.9))  # ... deep blue straight up
 DEEP = np.array((0.0, 0.2, 0.4))  # the ocean shading's Deep Color
 
 
+def _new_world(scene, name):
+    """A new world with an empty node tree, the scene's: (world, its nodes, its links)."""
+    world = bpy.data.worlds.new(name)
+    if bpy.app.version < (5, 0, 0):
+        world.use_nodes = True
+    world.node_tree.nodes.clear()
+    scene.world = world
+    return world, world.node_tree.nodes, world.node_tree.links
+
+
 def _gradient_world(scene):
     """A procedural sky: HORIZON at the horizon to ZENITH straight up, linear in the direction's
     height z (and HORIZON below the horizon): no image, no single colour."""
-    world = bpy.data.worlds.new("Gradient Sky")
-    if bpy.app.version < (5, 0, 0):
-        world.use_nodes = True
-    nodes, links = world.node_tree.nodes, world.node_tree.links
-    nodes.clear()
+    world, nodes, links = _new_world(scene, "Gradient Sky")
     coords = nodes.new("ShaderNodeTexCoord")
     split = nodes.new("ShaderNodeSeparateXYZ")
     ramp = nodes.new("ShaderNodeMix")
@@ -40,18 +46,13 @@ def _gradient_world(scene):
     links.new(split.outputs["Z"], ramp.inputs["Factor"])
     links.new(ramp.outputs["Result"], background.inputs["Color"])
     links.new(background.outputs["Background"], output.inputs["Surface"])
-    scene.world = world
     return world
 
 
 def _sky_texture_world(scene):
     """Blender's own Sky Texture (its physical model: Nishita, or its successor from 5.0), a sun
     18 degrees up."""
-    world = bpy.data.worlds.new("Sky Texture")
-    if bpy.app.version < (5, 0, 0):
-        world.use_nodes = True
-    nodes, links = world.node_tree.nodes, world.node_tree.links
-    nodes.clear()
+    world, nodes, links = _new_world(scene, "Sky Texture")
     sky = nodes.new("ShaderNodeTexSky")
     kinds = [item.identifier for item in sky.bl_rna.properties["sky_type"].enum_items]
     sky.sky_type = next(k for k in ("NISHITA", "MULTIPLE_SCATTERING", "SINGLE_SCATTERING") if k in kinds)
@@ -62,7 +63,6 @@ def _sky_texture_world(scene):
     output = nodes.new("ShaderNodeOutputWorld")
     links.new(sky.outputs["Color"], background.inputs["Color"])
     links.new(background.outputs["Background"], output.inputs["Surface"])
-    scene.world = world
     return world
 
 
@@ -182,8 +182,6 @@ def test_a_traced_sky_sea_with_a_float_renders_the_same_without_the_add_on(
 ):
     """The traced sky with the rest: an open sea under the gradient sky, its surroundings (a
     bed), a buoy floating on it; saved, reopened without the add-on and auto-run off, the same."""
-    import addon_utils
-
     scene = harness.clean_scene(engine="CYCLES", width=32, height=20, samples=2)
     _gradient_world(scene)
     harness.add_cube(scene, (0.0, 10.0, -3.0), size=6.0, name="Bed")
@@ -199,10 +197,8 @@ def test_a_traced_sky_sea_with_a_float_renders_the_same_without_the_add_on(
     path = tmp_path / "traced.blend"
     bpy.ops.wm.save_as_mainfile(filepath=str(path))
     before = render(scene, "with-addon", exr=True)[..., :3]
-    addon_utils.disable(harness.ADDON_MODULE, default_set=True)
-    bpy.context.preferences.filepaths.use_scripts_auto_execute = False
-    bpy.ops.wm.open_mainfile(filepath=str(path), load_ui=False, use_scripts=False)
-    bpy.context.scene.frame_set(1)
-    bpy.context.scene.frame_set(12)
-    after = render(bpy.context.scene, "without-addon", exr=True)[..., :3]
+    scene = harness.reopen_without_add_on(path)
+    scene.frame_set(1)
+    scene.frame_set(12)
+    after = render(scene, "without-addon", exr=True)[..., :3]
     assert np.abs(after - before).mean() < 0.01, np.abs(after - before).mean()

@@ -302,3 +302,16 @@ def blender_output(action):
                 os.close(fd)
         sink.seek(0)
         return sink.read().decode(errors="replace"), result
+
+
+def reopen_without_add_on(path):
+    """Disables the add-on, turns auto-run scripts off and opens the .blend `path`, as a render
+    farm worker without the add-on would; returns the opened file's scene. (The test fixture
+    `addon_disabled_afterwards` brings both back.)"""
+    import addon_utils
+    import bpy
+
+    addon_utils.disable(ADDON_MODULE, default_set=True)
+    bpy.context.preferences.filepaths.use_scripts_auto_execute = False
+    bpy.ops.wm.open_mainfile(filepath=str(path), load_ui=False, use_scripts=False)
+    return bpy.context.scene

@@ -10,6 +10,7 @@ from ..nodes.material import bump_image, glint_sun, parts_built, water_node
 from ..nodes.ocean_material import ocean_nodes
 from ..nodes.water_surface import DEBUG_VIEWS
 from ..nodes.water_waves import WAVE_COUNT
+from ..operators.part_ops import PART_ITEMS
 from ..water import camera_clip, floating, kind, open_sea, physical_caustics
 from ..water.editable import why_not_editable
 from ..water.mirror import find_probe
@@ -50,10 +51,11 @@ _SECTIONS = (
 # The optional parts of the lake shading (`water_surface.PARTS`): a switch, then their inputs
 # while they are in the shader.
 _PARTS = {
-    "depth": ("Depth Colour", ("Absorption", "Scatter Color")),
-    "foam": ("Shore Foam", ("Foam Width", "Foam Amount")),
-    "caustics": ("Caustics", ("Caustics", "Caustics Scale")),
+    "depth": ("Absorption", "Scatter Color"),
+    "foam": ("Foam Width", "Foam Amount"),
+    "caustics": ("Caustics", "Caustics Scale"),
 }
+_PART_LABELS = {name: label for name, label, _tip in PART_ITEMS}
 
 
 class WATER_MT_presets(bpy.types.Menu):
@@ -175,7 +177,7 @@ class VIEW3D_PT_water_surface(bpy.types.Panel):
 
     def draw_part(self, box, node, name):
         """A part's switch, and its inputs while it is in the shader (out, it costs nothing)."""
-        label, inputs = _PARTS[name]
+        label, inputs = _PART_LABELS[name], _PARTS[name]
         on = name in parts_built(node.node_tree)
         op = box.operator(
             "object.water_part_switch",
