@@ -7,8 +7,9 @@ looks the sky up in that direction (the world's environment image, or its
 colour) and hands it to `Water Ocean Shade` (any other world the shade's "+ Traced Sky" variant
 reflects with a Glossy closure instead):
 `F = dot(-eye, n) / 2 + 0.5`, `deep * F + sky * (1 - F) + pow(mean(sky), Glint Power)`,
-unlit, as the seeds draw it. Where the mesh carries foam (the open sea's
-Ocean modifier, `sea_fade.py`) the crests turn to white foam lit by the scene.
+unlit, as the seeds draw it. Where the mesh carries crest foam (the open sea's
+`water_whitecaps`, `sea_fade.py`) whitecaps break out as white foam lit by the scene, the foam
+tile breaking them up as it does the shore's foam.
 
 With the surroundings' attributes (`water_depth`, `water_shore_distance`, `water_surroundings`,
 as on the lake), the lake's rules apply: the bed is seen through the water at
@@ -20,16 +21,65 @@ Two groups, because a shader group cannot hold the
 world's image: the lookup sits between them in the material.
 """
 
-from . import bump_uv, caustics, water_surface
+from . import bump_uv, caustics, foam_map, sea_fade, water_surface
 from .bump_uv import TIME_INPUT
-from .spec import BUMP_IMAGE, GroupSpec, Node, Part, Socket, attribute, group_node, math, pass_inputs, vmath
+from .spec import (
+    BUMP_IMAGE,
+    FOAM_IMAGE,
+    GroupSpec,
+    Node,
+    Part,
+    Socket,
+    attribute,
+    group_node,
+    math,
+    pass_inputs,
+    vmath,
+)
 from .water_waves import NORMAL_ATTRIBUTE
 
 NORMAL_NAME = "Water Ocean Normal"
 SHADE_NAME = "Water Ocean Shade"
 DEEP_BLUE = (0.0, 0.2, 0.4, 1.0)
 WHITECAPS_MAX = 4.0
-FOAM_EDGES = (0.05, 0.3)  # the Ocean modifier's foam (as rendered): none below 0.05, white from 0.3
+# The whitecaps' two reads of the foam tile, metres along and across the wind (its bubbles,
+# `foam_map.py`, are a fifth of the tile down to a thirty-first), drawn out downwind: the coarse
+# read's bubble middles are the whitecaps, metres across; the fine read laces each.
+WHITECAP_BLOB_TILE = (60.0, 30.0)
+WHITECAP_TILE = (12.0, 6.0)
+WHITECAP_BLOB_SOFTNESS = 0.01
+WHITECAP_FOAM = 0.9  # f inside a whitecap: the lace covers WHITECAP_FOAM - SOFTNESS / 2 of it
+# The bubbles' share per share of the sea asked: 1 / (crest share x lace cover x what of a
+# crest's points shows from above), the last measured.
+WHITECAP_SEEN = 1.0
+WHITECAP_BLOB_GAIN = 1.0 / (sea_fade.CREST_SHARE * (WHITECAP_FOAM - foam_map.SOFTNESS / 2) * WHITECAP_SEEN)
+
+
+def _tile_read(key, tile, column, label, interpolation="Linear"):
+    """Nodes reading the foam tile at (along, across) / `tile` metres: `{key}_tile:Color`."""
+    return {
+        f"{key}_u": math("DIVIDE", column, "along / length", b=tile[0]),
+        f"{key}_v": math("DIVIDE", column, "across / width", b=tile[1]),
+        f"{key}_uv": Node("ShaderNodeCombineXYZ", column + 1),
+        f"{key}_tile": Node(
+            "ShaderNodeTexImage",
+            column + 2,
+            {"extension": "REPEAT", "interpolation": interpolation, "image": FOAM_IMAGE},
+            label=label,
+        ),
+    }
+
+
+def _tile_links(key):
+    return (
+        ("cap_along:Value", f"{key}_u:#0"),
+        ("cap_across:Value", f"{key}_v:#0"),
+        (f"{key}_u:Value", f"{key}_uv:X"),
+        (f"{key}_v:Value", f"{key}_uv:Y"),
+        (f"{key}_uv:Vector", f"{key}_tile:Vector"),
+    )
+
+
 FOAM_WHITE = (0.85, 0.87, 0.88)
 
 
@@ -358,7 +408,17 @@ SHADE_INPUTS = (
         min=0.0,
         max=1.0,
         hide_value=True,
-        tooltip="The Ocean modifier's foam here (0 where the mesh has none)",
+        tooltip="The crest's foam here, 0 to 1 (the open sea's `water_whitecaps`; 0 where the mesh has none)",
+    ),
+    Socket(
+        "Whitecap Coverage",
+        "NodeSocketFloat",
+        0.02,
+        min=0.0,
+        max=1.0,
+        subtype="FACTOR",
+        tooltip="Share of the sea whitecaps cover at Whitecaps 1 (the open sea drives it from its wind, as "
+        "Monahan and O'Muircheartaigh measured the sea's whitecaps)",
     ),
     Socket(
         "Whitecaps",
@@ -366,7 +426,8 @@ SHADE_INPUTS = (
         1.0,
         min=0.0,
         max=WHITECAPS_MAX,
-        tooltip="How much of the Ocean modifier's foam shows as white, sunlit foam on the crests (0 = none)",
+        tooltip="Whitecaps on the crests, white foam lit by the scene: 1 as many as nature has for the "
+        "wind (Monahan), 0 none, 2 more",
     ),
     # The surroundings (depth colour, shore foam, caustics), as on the lake: nothing without them.
     *bump_uv.SCROLL_INPUTS,  # Wave Length, Wind Direction, Wind Force, Time
@@ -486,8 +547,8 @@ _DEBUG_NODES, _DEBUG_LINKS = _debug_nodes()
 FULL_SHADE_SPEC = GroupSpec(
     name=SHADE_NAME,
     # 2: whitecaps; 3: depth colour, shore foam and caustics from the surroundings; 4: the traced
-    # sky and the debug views
-    version=4,
+    # sky and the debug views; 5: whitecaps broken up by the foam tile, as the shore's foam
+    version=5,
     description="Ocean colour: deep blue and the reflected sky by the ocean Fresnel, plus the glint; "
     "white lit foam on the crests; with the surroundings, the bed seen through shallow water, "
     "shore foam and caustics",
@@ -542,16 +603,45 @@ FULL_SHADE_SPEC = GroupSpec(
             label="the bed, refracted",
         ),
         "water_shader": Node("ShaderNodeAddShader", 31, label="unlit + refraction"),
-        # Foam: whitecaps (the foam's crests, smoothstep over FOAM_EDGES, times the strength) or
-        # shore foam (the lake's coverage), whichever covers more; white, lit.
-        "crest": Node(
+        # Foam: whitecaps or shore foam (the lake's coverage), whichever covers more; white, lit.
+        # Whitecaps break on the crests the sea's fade marks (`water_whitecaps`, the Foam input):
+        # there the foam tile, read coarse, picks bubbles B of the share the wind asks for
+        # (the tile is equalised: B < s covers s of it), and inside them the foam tile, read fine,
+        # laces the foam as on the shore, clamp((b + f - 1) / SOFTNESS) with f = WHITECAP_FOAM.
+        # Both reads follow where the water came from (`water_rest`: the foam rides with the
+        # chop), drawn out along the wind.
+        "rest": attribute(sea_fade.REST_ATTRIBUTE, 24, "water_rest (where the water came from)"),
+        "wind_w": vmath("NORMALIZE", 24, "w"),
+        "wind_across": vmath("CROSS_PRODUCT", 25, "z x w: across the wind", a=(0.0, 0.0, 1.0)),
+        "cap_along": vmath("DOT_PRODUCT", 26, "along the wind (m)"),
+        "cap_across": vmath("DOT_PRODUCT", 26, "across the wind (m)"),
+        # Closest: the tile's values stay evenly spread (blending neighbours would thin out the
+        # darkest few per cent, the shares light winds ask for).
+        **_tile_read("blob", WHITECAP_BLOB_TILE, 27, "foam tile B (which whitecaps)", "Closest"),
+        **_tile_read("lace", WHITECAP_TILE, 27, "foam tile b (their lace)"),
+        "cap_share": math("MULTIPLY", 27, "Whitecaps x Whitecap Coverage"),
+        "blob_share": math("MULTIPLY", 28, "s: bubbles' share", b=WHITECAP_BLOB_GAIN),
+        "blob_gap": math("SUBTRACT", 29, "s - B"),
+        "blob": Node(
             "ShaderNodeMapRange",
-            28,
-            {"data_type": "FLOAT", "interpolation_type": "SMOOTHSTEP", "clamp": True},
-            {"From Min": FOAM_EDGES[0], "From Max": FOAM_EDGES[1]},
-            label="foam on the crests",
+            30,
+            {"interpolation_type": "LINEAR", "clamp": True},
+            {1: -WHITECAP_BLOB_SOFTNESS / 2, 2: WHITECAP_BLOB_SOFTNESS / 2, 3: 0.0, 4: 1.0},
+            label="a whitecap's bubble",
         ),
-        "cover": math("MULTIPLY", 29, "whitecap cover", clamp=True),
+        "on_crest": math("MULTIPLY", 31, "on a crest x bubble"),
+        # No share, no whitecap: the bubble's soft edge would otherwise keep a few.
+        "some": math("MULTIPLY", 30, "any share?", clamp=True, b=1.0 / WHITECAP_BLOB_SOFTNESS),
+        "on_some": math("MULTIPLY", 31, "x any share"),
+        "crest": math("MULTIPLY", 32, "f", b=WHITECAP_FOAM),
+        "cap_sum": math("ADD", 32, "b + f"),
+        "cover": Node(
+            "ShaderNodeMapRange",
+            32,
+            {"interpolation_type": "LINEAR", "clamp": True},
+            {1: 1.0, 2: 1.0 + foam_map.SOFTNESS, 3: 0.0, 4: 1.0},
+            label=f"whitecaps: clamp((b + f - 1) / {foam_map.SOFTNESS:g})",
+        ),
         "shore_foam": group_node(water_surface.FOAM_NAME, 28, "shore foam coverage"),
         "foam_cover": math("MAXIMUM", 30, "foam cover"),
         # Lit from 4.5; EEVEE in 4.2 drops the traced refraction beside a diffuse closure, so there
@@ -626,11 +716,31 @@ FULL_SHADE_SPEC = GroupSpec(
         ("input:Normal", "refraction:Normal"),
         ("emit:Emission", "water_shader:#0"),
         ("refraction:BSDF", "water_shader:#1"),
-        ("input:Foam", "crest:Value"),
-        ("crest:Result", "cover:#0"),
-        ("input:Whitecaps", "cover:#1"),
+        ("input:Wind Direction", "wind_w:#0"),
+        ("wind_w:Vector", "wind_across:#1"),
+        ("rest:Vector", "cap_along:#0"),
+        ("wind_w:Vector", "cap_along:#1"),
+        ("rest:Vector", "cap_across:#0"),
+        ("wind_across:Vector", "cap_across:#1"),
+        *_tile_links("blob"),
+        *_tile_links("lace"),
+        ("input:Whitecaps", "cap_share:#0"),
+        ("input:Whitecap Coverage", "cap_share:#1"),
+        ("cap_share:Value", "blob_share:#0"),
+        ("blob_share:Value", "blob_gap:#0"),
+        ("blob_tile:Color", "blob_gap:#1"),
+        ("blob_gap:Value", "blob:Value"),
+        ("input:Foam", "on_crest:#0"),
+        ("blob:Result", "on_crest:#1"),
+        ("blob_share:Value", "some:#0"),
+        ("on_crest:Value", "on_some:#0"),
+        ("some:Value", "on_some:#1"),
+        ("on_some:Value", "crest:#0"),
+        ("lace_tile:Color", "cap_sum:#0"),
+        ("crest:Value", "cap_sum:#1"),
+        ("cap_sum:Value", "cover:Value"),
         *water_surface.foam_feed("shore_foam", "bump_uv:Vector"),
-        ("cover:Value", "foam_cover:#0"),
+        ("cover:Result", "foam_cover:#0"),
         ("shore_foam:Coverage", "foam_cover:#1"),
         ("foam_cover:Value", "mix:Fac"),
         ("with_mirror:Shader", "mix:#1"),

@@ -7,17 +7,70 @@ the sea's centre the displacement fades, reaching none at `Fade End`: the points
 their rest place (`water_rest`, stored in the mesh when it is made; the Ocean modifier keeps
 it). The far sea is then flat and shaded by the bump alone, as a far sea looks.
 
-The modifier's foam (its `water_ocean_foam` corner colour) fades the same way and is stored
-as the point attribute `water_whitecaps`, which the ocean shading turns into white foam.
+Whitecaps break on the highest crests: those standing above the `Crest Share` quantile of the
+heights in the un-faded middle, found every frame by bisection (a few Attribute Statistic passes),
+so the share holds whatever the wind, spectrum, scale or seed (the Ocean modifier's heights are
+far from a normal spread: a few waves near the peak carry most of them). There the point
+attribute `water_whitecaps` is 1, fading with distance like the waves: the ocean shading scatters
+whitecaps over these crests, as many as the wind raises (`ocean.py`).
 """
 
 from .spec import GroupSpec, Node, Socket, math, vmath
 
 NAME = "Water Sea Fade"
-VERSION = 1
+# 2: whitecaps from the crests' heights (were the Ocean modifier's own foam: blotches tens of
+# metres across, a share of the sea that hardly followed the wind)
+VERSION = 2
 REST_ATTRIBUTE = "water_rest"
-OCEAN_FOAM_ATTRIBUTE = "water_ocean_foam"  # the Ocean modifier's foam layer
+OCEAN_FOAM_ATTRIBUTE = "water_ocean_foam"  # the Ocean modifier's foam layer (version 1 read it)
 WHITECAPS_ATTRIBUTE = "water_whitecaps"
+CREST_SHARE = 0.5
+
+# The threshold's bisection: from 2 standard deviations up or down by 1, then by half the last
+# step each time: STEPS steps find it between 0 and 4 deviations, to 2 / 2^STEPS.
+BISECTION_STEPS = 9
+CREST_EDGE = 0.1  # deviations over which a point comes onto the crest
+
+
+def _bisection():
+    """Nodes and links that find T with mean(z > T) = Whitecap Share over the middle's points:
+    each step measures the share above its T and moves T up (too much foam) or down by half the
+    last step. Returns (nodes, links, the final T's socket)."""
+    nodes, links = {}, []
+    threshold, step = None, 2.0
+    for i in range(BISECTION_STEPS):
+        column = 7 + 2 * i
+        nodes[f"over_{i}"] = math(
+            "GREATER_THAN", column, f"z > T{i}", **({"b": 2.0} if threshold is None else {})
+        )
+        nodes[f"share_{i}"] = Node(
+            "GeometryNodeAttributeStatistic",
+            column,
+            {"data_type": "FLOAT", "domain": "POINT"},
+            label=f"share > T{i}",
+        )
+        nodes[f"more_{i}"] = math("GREATER_THAN", column + 1, "too much foam?")
+        nodes[f"move_{i}"] = math("MULTIPLY_ADD", column + 1, f"+-{step / 2:g}", b=step, c=-step / 2)
+        nodes[f"t_{i + 1}"] = math(
+            "ADD", column + 1, f"T{i + 1}", **({"b": 2.0} if threshold is None else {})
+        )
+        links += [
+            ("z:Value", f"over_{i}:#0"),
+            ("input:Geometry", f"share_{i}:Geometry"),
+            ("middle:Value", f"share_{i}:Selection"),
+            (f"over_{i}:Value", f"share_{i}:Attribute"),
+            (f"share_{i}:Mean", f"more_{i}:#0"),
+            ("input:Crest Share", f"more_{i}:#1"),
+            (f"more_{i}:Value", f"move_{i}:#0"),
+            (f"move_{i}:Value", f"t_{i + 1}:#0"),
+        ]
+        if threshold is not None:
+            links += [(threshold, f"over_{i}:#1"), (threshold, f"t_{i + 1}:#1")]
+        threshold, step = f"t_{i + 1}:Value", step / 2
+    return nodes, tuple(links), threshold
+
+
+_BISECTION_NODES, _BISECTION_LINKS, _THRESHOLD = _bisection()
 
 SPEC = GroupSpec(
     name=NAME,
@@ -43,6 +96,16 @@ SPEC = GroupSpec(
             subtype="DISTANCE",
             tooltip="Distance from the sea's centre past which the sea is flat (shaded by the bump only)",
         ),
+        Socket(
+            "Crest Share",
+            "NodeSocketFloat",
+            CREST_SHARE,
+            min=0.0,
+            max=1.0,
+            subtype="FACTOR",
+            tooltip="Share of the sea (its highest crests) where whitecaps may break; how many do is "
+            "the ocean shading's Whitecap Coverage",
+        ),
     ),
     outputs=(Socket("Geometry", "NodeSocketGeometry"),),
     nodes={
@@ -54,13 +117,6 @@ SPEC = GroupSpec(
             label="rest place",
         ),
         "position": Node("GeometryNodeInputPosition", 1),
-        "foam": Node(
-            "GeometryNodeInputNamedAttribute",
-            1,
-            {"data_type": "FLOAT"},
-            {"Name": OCEAN_FOAM_ATTRIBUTE},
-            label="Ocean modifier's foam",
-        ),
         "distance": vmath("LENGTH", 2, "distance from the centre"),
         "end": math("MAXIMUM", 2, "end >= start + 1 mm"),
         "start_plus": math("ADD", 1, "start + 1 mm", b=0.001),
@@ -70,6 +126,27 @@ SPEC = GroupSpec(
             {"data_type": "FLOAT", "interpolation_type": "SMOOTHSTEP", "clamp": True},
             {"To Min": 1.0, "To Max": 0.0},
             label="1 near, 0 far",
+        ),
+        # The crest's height z in standard deviations of the middle's heights, this frame.
+        "rise": Node("ShaderNodeSeparateXYZ", 3, label="displacement"),
+        "middle": math("LESS_THAN", 3, "in the un-faded middle"),
+        "stats": Node(
+            "GeometryNodeAttributeStatistic",
+            4,
+            {"data_type": "FLOAT", "domain": "POINT"},
+            label="heights in the middle",
+        ),
+        "spread": math("MAXIMUM", 5, "deviation (>= 1 mm)", b=0.001),
+        "above": math("SUBTRACT", 5, "height - mean"),
+        "z": math("DIVIDE", 6, "z = (height - mean) / deviation"),
+        **_BISECTION_NODES,
+        "crest_edge": math("ADD", 7 + 2 * BISECTION_STEPS, "threshold + edge", b=CREST_EDGE),
+        "crest": Node(
+            "ShaderNodeMapRange",
+            8 + 2 * BISECTION_STEPS,
+            {"data_type": "FLOAT", "interpolation_type": "LINEAR", "clamp": True},
+            {"To Min": 0.0, "To Max": 1.0},
+            label="on a crest",
         ),
         "offset": vmath("SUBTRACT", 2, "displacement"),
         "kept": vmath("SCALE", 4, "displacement kept"),
@@ -98,7 +175,23 @@ SPEC = GroupSpec(
         ("near:Result", "kept:Scale"),
         ("rest:Attribute", "placed:#0"),
         ("kept:Vector", "placed:#1"),
-        ("foam:Attribute", "whitecaps:#0"),
+        ("offset:Vector", "rise:Vector"),
+        ("distance:Value", "middle:#0"),
+        ("input:Fade Start", "middle:#1"),
+        ("input:Geometry", "stats:Geometry"),
+        ("middle:Value", "stats:Selection"),
+        ("rise:Z", "stats:Attribute"),
+        ("stats:Standard Deviation", "spread:#0"),
+        ("rise:Z", "above:#0"),
+        ("stats:Mean", "above:#1"),
+        ("above:Value", "z:#0"),
+        ("spread:Value", "z:#1"),
+        *_BISECTION_LINKS,
+        (_THRESHOLD, "crest_edge:#0"),
+        ("z:Value", "crest:Value"),
+        (_THRESHOLD, "crest:From Min"),
+        ("crest_edge:Value", "crest:From Max"),
+        ("crest:Result", "whitecaps:#0"),
         ("near:Result", "whitecaps:#1"),
         ("input:Geometry", "move:Geometry"),
         ("placed:Vector", "move:Position"),
