@@ -10,7 +10,7 @@ whatever extension repository it was installed into::
     added = water_api.add_water(preset="windy_river", size=40)
 
 Bad input raises PresetError, AddWaterError, MirrorSetupError, SurroundingsError, PhysicalCausticsError,
-FloatError, RemoveWaterError,
+FloatError, RemoveWaterError, OpenSeaError,
 NotEditableError (linked or overridden data, never edited) or FileJobError, each with a one-line
 message; nothing is left half made.
 """
@@ -26,6 +26,7 @@ from .water import files as _files
 from .water import floating as _floating
 from .water import kind as _kind
 from .water import mirror as _mirror
+from .water import open_sea as _open_sea
 from .water import physical_caustics as _physical_caustics
 from .water import removal as _removal
 from .water import surroundings as _surroundings
@@ -35,6 +36,7 @@ from .water.editable import NotEditableError, check_editable
 from .water.files import FileJobError
 from .water.floating import FloatError
 from .water.mirror import MirrorSetupError
+from .water.open_sea import OpenSeaError
 from .water.physical_caustics import PhysicalCausticsError
 from .water.plane import AddedWater, AddWaterError
 from .water.plane import add_water as _add_water
@@ -49,6 +51,7 @@ __all__ = (
     "FloatError",
     "MirrorSetupError",
     "NotEditableError",
+    "OpenSeaError",
     "PhysicalCausticsError",
     "PresetError",
     "RemoveWaterError",
@@ -67,6 +70,7 @@ __all__ = (
     "remove_water",
     "set_physical_caustics",
     "set_surroundings",
+    "set_swell",
     "setup_mirror",
     "stop_floating",
     "SurroundingsError",
@@ -229,6 +233,24 @@ def extend_camera_clip(
     so none of it is cut off (an open sea reaches kilometres; a camera sees 100 m by default).
     Returns the change in words, [] when it already sees all of it; ValueError without a camera."""
     return _camera_clip.extend_clip(scene or bpy.context.scene, water, camera)
+
+
+def set_swell(
+    water: bpy.types.Object,
+    height: float | None = None,
+    period: float | None = None,
+    direction: tuple[float, float] | None = None,
+    scene: bpy.types.Scene | None = None,
+) -> str:
+    """Sets the open sea's swell, as `sea_swell_height` (m, significant), `sea_swell_period` (s)
+    and `sea_swell_direction` (x, y) do when adding it; values left out stay as they were, height
+    0 removes it. Returns the change in words. OpenSeaError for water that is no open sea,
+    PresetError for a value of the wrong type."""
+    why = _kind.refusal(water, "swell", subject=f"'{getattr(water, 'name', water)}'")
+    if why is not None:
+        raise OpenSeaError(why)
+    values = {"sea_swell_height": height, "sea_swell_period": period, "sea_swell_direction": direction}
+    return _open_sea.change_swell(water, values, scene or bpy.context.scene)
 
 
 def preset_ids() -> list[str]:

@@ -17,6 +17,7 @@ from .preset_ops import (
 from .remove_ops import OBJECT_OT_water_remove
 from .repair_ops import OBJECT_OT_water_surface_repair
 from .surroundings_ops import OBJECT_OT_water_surroundings_set
+from .swell_ops import OBJECT_OT_water_sea_swell
 from .waves_ops import OBJECT_OT_water_waves_add
 
 classes = (
@@ -36,6 +37,7 @@ classes = (
     OBJECT_OT_water_float_stop,
     OBJECT_OT_water_remove,
     OBJECT_OT_water_camera_clip,
+    OBJECT_OT_water_sea_swell,
 )
 
 _register_classes, _unregister_classes = bpy.utils.register_classes_factory(classes)

@@ -143,7 +143,49 @@ WHITECAPS = Field(
     "Whitecaps",
     _WHITECAPS_SOCKET.tooltip,
 )
-SEA_FIELDS = (SEA, SEA_WIND_SPEED, SEA_SPECTRUM, SEA_CHOPPINESS, SEA_DEPTH, SEA_SEED, WHITECAPS)
+# The swell (`open_sea.set_swell`): long regular waves from far away, on top of the wind's sea.
+SEA_SWELL_HEIGHT = Field(
+    "sea_swell_height",
+    None,
+    "float",
+    0.0,
+    0.0,
+    20.0,
+    "Swell Height",
+    "Significant height of a swell in metres, on top of the wind's waves (0: no swell)",
+)
+SEA_SWELL_PERIOD = Field(
+    "sea_swell_period",
+    None,
+    "float",
+    10.0,
+    2.0,
+    30.0,
+    "Swell Period",
+    "Seconds between the swell's crests: its waves are g T^2 / 2 pi long in deep water (10 s: 156 m)",
+)
+SEA_SWELL_DIRECTION = Field(
+    "sea_swell_direction",
+    None,
+    "vec2",
+    (0.0, 1.0),
+    -1.0,
+    1.0,
+    "Swell Direction",
+    "The way the swell travels (x, y), apart from the wind's",
+)
+SEA_FIELDS = (
+    SEA,
+    SEA_WIND_SPEED,
+    SEA_SPECTRUM,
+    SEA_CHOPPINESS,
+    SEA_DEPTH,
+    SEA_SEED,
+    WHITECAPS,
+    SEA_SWELL_HEIGHT,
+    SEA_SWELL_PERIOD,
+    SEA_SWELL_DIRECTION,
+)
 
 FIELDS = (
     SHADING,

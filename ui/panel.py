@@ -228,6 +228,13 @@ class VIEW3D_PT_water_surface(bpy.types.Panel):
         box.use_property_split = True
         for prop, text in _SEA_PROPS:
             box.prop(ocean, prop, text=text)
+        swell = open_sea.swell_values(obj)
+        if swell["sea_swell_height"] > 0.0:
+            height, period, (x, y) = (swell[key] for key in open_sea.SWELL_KEYS)
+            text = f"Swell: {height:g} m, {period:g} s, to ({x:.2f}, {y:.2f})"
+        else:
+            text = "Swell: none"
+        box.operator("object.water_sea_swell", text=text, icon="MOD_OCEAN")
         whitecaps = open_sea.whitecaps_input(material)
         if whitecaps is not None:
             box.prop(whitecaps, "default_value", text="Whitecaps")

@@ -25,7 +25,9 @@ FEATURES = {
         | {"floating", "repair", "presets", "sun_choice", "bump_choice", "shader_parts"}
     ),
     OCEAN: frozenset({"ray_tracing", "waves", "surroundings", "caustics", "floating", "repair"}),
-    OPEN_SEA: frozenset({"ray_tracing", "surroundings", "caustics", "floating", "repair", "whitecaps"}),
+    OPEN_SEA: frozenset(
+        {"ray_tracing", "surroundings", "caustics", "floating", "repair", "whitecaps", "swell"}
+    ),
 }
 
 # Why a kind refuses a feature, in words for a poll message or an error.
@@ -38,6 +40,7 @@ _WHY = {
     "bump_choice": "this choice is for lake water",
     "waves": "its waves are Blender's Ocean modifier (set them in the panel)",
     "whitecaps": "whitecaps are the open sea's",
+    "swell": "a swell is the open sea's (add one with Open Sea)",
 }
 _NAMES = {LAKE: "lake", OCEAN: "ocean shading", OPEN_SEA: "an open sea"}
 

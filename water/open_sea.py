@@ -7,14 +7,23 @@ scene's clock (a simple expression, no Python at render) and turns its foam on; 
 Fade` (`nodes/sea_fade.py`) then flattens the far sea and hands the foam to the ocean shading
 as `water_whitecaps`.
 
-Choices, from the wind speed V (m/s): the waves' peak length is about 2 pi V^2 / g; the tile
-(`spatial_size`) holds TILE_WAVES of them, at least MIN_TILE metres; the FFT grid is
-`resolution`^2 cells a side, the largest of RESOLUTIONS the free memory holds. The waves are
-aligned with the wind (`wave_alignment`) and the wind direction (x, y) becomes the modifier's
-angle atan2(-y, x) (the simulation's z axis is the object's -y).
+Choices, from the wind speed V (m/s): the tile (`spatial_size`) holds TILE_WAVES lengths
+2 pi V^2 / g (4.6 of a grown sea's peak waves), at least MIN_TILE metres; the FFT grid is
+`resolution`^2 cells a side, the largest of RESOLUTIONS the free memory holds. The alignment
+and damping make Blender's spectrum the grown sea's (`sea_math.WIND_ALIGNMENT`: its peak period
+and heights over time), the waves travel along the wind direction (x, y) (`sea_math.wave_angle`),
+and `wave_scale` gives the sea its significant height 0.21 V^2 / g, from the heights' spread at
+`wave_scale` 1 measured on a copy of the modifier (`height_std_at_scale_1`).
+
+A swell (`sea_swell_height` above 0) is a second Ocean modifier, `Water Swell`, just before
+`Water Ocean`: long regular waves of `sea_swell_period` from `sea_swell_direction`, on top of the
+wind's sea (`set_swell`, numbers in `sea_math.swell_settings`); without it there is none.
 """
 
+import math
+
 import bpy
+import numpy as np
 
 from ..nodes import SPECS, sea_fade
 from ..nodes.builder import ensure_group
@@ -29,17 +38,27 @@ from .sea_math import (
     HEIGHT_STD_AT_SCALE_1,
     RESOLUTIONS,
     SPECTRA,
+    SWELL_ALIGNMENT,
+    SWELL_STD_AT_SCALE_1,
     WIND_ALIGNMENT,
+    WIND_DAMPING,
     ocean_resolution,
     slope_expressions,
+    swell_settings,
+    swell_wave_scale,
     tile_size,
     wave_angle,
     wave_scale,
 )
 from .waves import set_wave_input
+from .whitecaps import drive_whitecaps
 
 OCEAN_MODIFIER = "Water Ocean"
 FADE_MODIFIER = "Water Sea Fade"
+SWELL_MODIFIER = "Water Swell"
+# The swell's values as asked, on the sea object (the panel shows them, a change starts from them).
+SWELL_PROPERTY = "water_sea_swell"
+SWELL_KEYS = ("sea_swell_height", "sea_swell_period", "sea_swell_direction")
 
 
 class OpenSeaError(RuntimeError):
@@ -67,6 +86,8 @@ SETTINGS = (
     "wind_velocity",
     "wave_direction",
     "wave_alignment",
+    "damping",
+    "wave_scale_min",
     "choppiness",
     "wave_scale",
     "depth",
@@ -109,6 +130,7 @@ def set_sea(obj, values, scene):
     ocean.wind_velocity = wind
     ocean.wave_direction = wave_angle(values["wind_direction"])
     ocean.wave_alignment = WIND_ALIGNMENT
+    ocean.damping = WIND_DAMPING
     ocean.choppiness = values["sea_choppiness"]
     ocean.depth = values["sea_depth"]
     ocean.random_seed = values["sea_seed"]
@@ -118,18 +140,152 @@ def set_sea(obj, values, scene):
     ocean.use_foam = True
     ocean.foam_layer_name = sea_fade.OCEAN_FOAM_ATTRIBUTE
     ocean.foam_coverage = FOAM_BIAS
-    ocean.wave_scale = wave_scale(wind, ocean.spectrum)
+    ocean.wave_scale = wave_scale(wind, ocean.spectrum, height_std_at_scale_1(ocean))
     drive_clock(ocean, scene, prop="time")
     _set_fade(fade, FADE_START_TILES * ocean.spatial_size, FADE_END_TILES * ocean.spatial_size)
     drive_slopes(obj, ocean, first=found is None)
+    if "sea_swell_height" in values:
+        set_swell(obj, {key: values[key] for key in SWELL_KEYS}, scene)
     obj.update_tag()
+
+
+def height_std_at_scale_1(ocean):
+    """The standard deviation of the heights the Ocean modifier `ocean` gives at `wave_scale` 1,
+    over its whole tile; None when it cannot be measured (then `sea_math`'s typical values stand).
+
+    Blender scales its heights by the highest point of the tile at time 0, so this depends on
+    the seed (about 15% either way). Measured on a copy: a grid of the FFT's own cells over one
+    tile, with the same waves (no chop, time 0), evaluated once in the context's scene and
+    removed. With damping 1 every wave runs one way only, so this spread over the tile at time 0
+    is also the spread over time at any point."""
+    cells = max(1, ocean.resolution) ** 2
+    step = ocean.spatial_size / cells
+    mesh = bpy.data.meshes.new("Water Sea Measure")
+    obj = None
+    try:
+        axis = np.arange(cells, dtype=np.float64) * step
+        x, y = np.meshgrid(axis, axis)
+        co = np.zeros((x.size, 3), dtype=np.float32)
+        co[:, 0], co[:, 1] = x.ravel(), y.ravel()
+        mesh.vertices.add(x.size)
+        mesh.vertices.foreach_set("co", co.ravel())
+        obj = bpy.data.objects.new("Water Sea Measure", mesh)
+        bpy.context.scene.collection.objects.link(obj)
+        copy = obj.modifiers.new("Measure", "OCEAN")
+        copy_settings(ocean, copy)
+        copy.choppiness = 0.0
+        copy.wave_scale = 1.0
+        copy.time = 0.0
+        copy.use_foam = copy.use_normals = False
+        copy.resolution = copy.viewport_resolution = ocean.resolution
+        evaluated = obj.evaluated_get(bpy.context.evaluated_depsgraph_get()).data
+        heights = np.zeros(len(evaluated.vertices) * 3)
+        evaluated.vertices.foreach_get("co", heights)
+        std = float(heights[2::3].std())
+    except (RuntimeError, TypeError, ValueError, AttributeError):  # a linked scene, no context
+        return None
+    finally:
+        if obj is not None:
+            bpy.data.objects.remove(obj)
+        bpy.data.meshes.remove(mesh)
+    return std if math.isfinite(std) and std > 1e-6 else None
+
+
+def swell_modifier(obj):
+    """The open sea's swell (the Ocean modifier just before its own), or None."""
+    found = sea_modifiers(obj)
+    if found is None:
+        return None
+    modifiers = list(obj.modifiers)
+    index = modifiers.index(found[0])
+    return modifiers[index - 1] if index > 0 and modifiers[index - 1].type == "OCEAN" else None
+
+
+def swell_values(obj):
+    """The swell's values (`SWELL_KEYS`) as last asked; height 0 without a swell."""
+    from ..presets import schema
+
+    values = {key: schema.BY_KEY[key].default for key in SWELL_KEYS}
+    stored = obj.get(SWELL_PROPERTY) if obj is not None else None
+    if swell_modifier(obj) is None:
+        values["sea_swell_height"] = 0.0
+    elif stored is not None:
+        try:
+            values = dict(zip(SWELL_KEYS, (float(stored[0]), float(stored[1]), tuple(stored[2:4]))))
+        except (TypeError, ValueError, IndexError, KeyError):
+            pass
+    return values
+
+
+def change_swell(obj, values, scene=None):
+    """Changes the open sea `obj`'s swell from `values` (any of `SWELL_KEYS`, from a script, the
+    operator or the panel): checked and clamped, the rest kept as they were. Height 0 removes it.
+    Returns the change in words. OpenSeaError when `obj` is no open sea."""
+    from ..presets import schema
+
+    if sea_modifiers(obj) is None:
+        raise OpenSeaError(f"'{getattr(obj, 'name', obj)}' is not an open sea")
+    unknown = set(values) - set(SWELL_KEYS)
+    if unknown:
+        raise schema.PresetError(f"unknown swell value(s): {', '.join(sorted(unknown))}")
+    given = {key: value for key, value in values.items() if value is not None}
+    schema.check_types(given)
+    asked = {**swell_values(obj), **schema.clamp_values(given)}
+    return set_swell(obj, asked, scene or bpy.context.scene)
+
+
+def set_swell(obj, values, scene):
+    """Adds, updates or (height 0) removes the open sea's swell from clamped values (`SWELL_KEYS`):
+    an Ocean modifier just before the sea's own, its time on `scene`'s clock, its depth, seed and
+    resolution the sea's. Returns the change in words."""
+    check_editable(obj)
+    ocean, _fade = sea_modifiers(obj)
+    swell = swell_modifier(obj)
+    height = values["sea_swell_height"]
+    if height <= 0.0:
+        if SWELL_PROPERTY in obj:
+            del obj[SWELL_PROPERTY]
+        if swell is None:
+            return "no swell"
+        swell.driver_remove("time")
+        obj.modifiers.remove(swell)
+        return f"swell removed from '{obj.name}'"
+    if swell is None:
+        swell = obj.modifiers.new(SWELL_MODIFIER, "OCEAN")
+        modifiers = list(obj.modifiers)
+        obj.modifiers.move(modifiers.index(swell), modifiers.index(ocean))
+    swell.geometry_mode = "DISPLACE"
+    swell.spectrum = "PHILLIPS"
+    for prop, value in swell_settings(
+        height, values["sea_swell_period"], values["sea_swell_direction"], ocean.depth
+    ).items():
+        setattr(swell, prop, value)
+    swell.wave_alignment = SWELL_ALIGNMENT
+    swell.damping = 1.0
+    swell.choppiness = 0.0  # a swell's waves are low and round
+    swell.depth = ocean.depth
+    swell.random_seed = ocean.random_seed
+    swell.resolution = swell.viewport_resolution = ocean.resolution
+    swell.use_normals = False
+    swell.use_foam = False
+    swell.wave_scale = swell_wave_scale(height, height_std_at_scale_1(swell))
+    drive_clock(swell, scene, prop="time")
+    direction = values["sea_swell_direction"]
+    obj[SWELL_PROPERTY] = [float(height), float(values["sea_swell_period"]), *map(float, direction[:2])]
+    obj.update_tag()
+    return (
+        f"swell of {height:g} m every {values['sea_swell_period']:g} s "
+        f"towards ({direction[0]:.2f}, {direction[1]:.2f}) on '{obj.name}'"
+    )
 
 
 def drive_slopes(obj, ocean, first=False):
     """The ocean shading's bump follows the sea's wind: its slopes along and across the wind are
     Cox and Munk's for the wind speed, its wind direction the modifier's (simple-expression
     drivers on the modifier's settings, so changing the wind in the panel changes them too).
-    Bump Strength becomes 1 when the sea is made (a multiplier the artist may change after)."""
+    Bump Strength becomes 1 when the sea is made (a multiplier the artist may change after).
+    The whitecaps' coverage follows the wind the same way (`whitecaps.py`)."""
+    drive_whitecaps(obj, ocean)
     normal = next((nodes[0] for slot in obj.material_slots if (nodes := ocean_nodes(slot.material))), None)
     if normal is None:
         return
@@ -144,9 +300,9 @@ def drive_slopes(obj, ocean, first=False):
     along, across = slope_expressions()
     drive_socket(normal.inputs["Slope Along Wind"], None, along, speed)
     drive_socket(normal.inputs["Slope Across Wind"], None, across, speed)
-    # The modifier's angle is atan2(-y, x) of the wind (`wave_angle`).
-    drive_socket(normal.inputs["Wind Direction"], 0, "cos(a)", angle)
-    drive_socket(normal.inputs["Wind Direction"], 1, "-sin(a)", angle)
+    # The modifier's waves at angle a travel along (-cos a, sin a): the wind's way (`wave_angle`).
+    drive_socket(normal.inputs["Wind Direction"], 0, "-cos(a)", angle)
+    drive_socket(normal.inputs["Wind Direction"], 1, "sin(a)", angle)
 
 
 def _set_fade(modifier, start, end):
@@ -156,12 +312,14 @@ def _set_fade(modifier, start, end):
 
 def crest_height(obj):
     """Metres the open sea's crests may reach above its rest plane (its significant wave height,
-    object units), 0 for any other water."""
+    the swell's added, object units; typical: a seed's may differ by 15%), 0 for any other water."""
     found = sea_modifiers(obj)
     if found is None:
         return 0.0
     ocean = found[0]
-    return 4.0 * ocean.wave_scale * HEIGHT_STD_AT_SCALE_1[ocean.spectrum]
+    height = 4.0 * ocean.wave_scale * HEIGHT_STD_AT_SCALE_1[ocean.spectrum]
+    swell = swell_modifier(obj)
+    return height + (4.0 * swell.wave_scale * SWELL_STD_AT_SCALE_1 if swell is not None else 0.0)
 
 
 def whitecaps_input(material):

@@ -68,12 +68,90 @@ def test_a_grown_seas_height_and_tile_follow_the_wind(addon_module):
         tile = sea.tile_size(wind)
         assert sea.MIN_TILE <= tile <= sea.MAX_TILE
         assert tile >= min(sea.MAX_TILE, sea.TILE_WAVES * peak)
-    # The wind's direction (x, y) turns into the modifier's angle atan2(-y, x), for any direction.
+    # The wind's direction (x, y) turns into the modifier's angle atan2(y, -x): its waves travel
+    # along (-cos a, sin a), the wind's way, for any direction.
     for x, y in ((1, 0), (0.6, 0.8), (-0.6, 0.8), (-1, -1)):
         angle = sea.wave_angle((x, y))
-        assert (math.cos(angle), -math.sin(angle)) == pytest.approx(np.array([x, y]) / math.hypot(x, y))
+        assert (-math.cos(angle), math.sin(angle)) == pytest.approx(np.array([x, y]) / math.hypot(x, y))
+        assert sea.angle_direction(angle) == pytest.approx(np.array([x, y]) / math.hypot(x, y))
     assert sea.ocean_resolution(available=10**12) == sea.RESOLUTIONS[0]
     assert sea.ocean_resolution(available=1) == sea.RESOLUTIONS[-1]
+
+
+def test_a_grown_sea_s_height_period_and_a_measured_calibration(addon_module):
+    """Pierson and Moskowitz: Hs 0.21 U^2 / g, Tp 2 pi U / (0.877 g); `wave_scale` from the
+    heights' spread at `wave_scale` 1, measured when given, else the spectrum's typical one."""
+    sea = addon_module("water.sea_math")
+    assert sea.significant_height(10.0) == pytest.approx(2.141, abs=1e-3)
+    assert sea.peak_period(10.0) == pytest.approx(7.303, abs=1e-3)
+    assert sea.peak_period(0.0) == 0.0
+    assert sea.sea_peak_wavelength(10.0) == pytest.approx(9.81 * 7.303**2 / (2 * math.pi), rel=1e-3)
+    assert sea.sea_peak_wavelength(10.0) == pytest.approx(sea.peak_wavelength(10.0) / 0.877**2)
+    assert 4 * 0.3 * sea.wave_scale(12.0, "PIERSON_MOSKOWITZ", 0.3) == pytest.approx(
+        sea.significant_height(12.0)
+    )
+    # Blender's alignment term cos^(10 a) / k^(10 a) times S(omega) is a sea's S(omega) k^-1.5 at 0.15.
+    assert 10 * sea.WIND_ALIGNMENT == pytest.approx(1.5)
+    assert sea.WIND_DAMPING == 1.0
+
+
+def test_the_swell_s_wavelength_tile_and_narrow_spectrum(addon_module):
+    """The swell's waves are g T^2 / 2 pi long in deep water (the dispersion relation's in
+    shallow water, T sqrt(g d) as it grows shallow); its tile holds SWELL_TILE_WAVES of them, and
+    Blender's Phillips spectrum with its settings peaks at the tile's ring of that many waves."""
+    sea = addon_module("water.sea_math")
+    assert sea.wavelength(10.0) == pytest.approx(9.81 * 100 / (2 * math.pi))
+    assert sea.wavelength(10.0, 1000.0) == pytest.approx(sea.wavelength(10.0), rel=1e-9)
+    assert sea.wavelength(20.0, 2.0) == pytest.approx(20.0 * math.sqrt(9.81 * 2.0), rel=0.01)
+    shallow = sea.wavelength(8.0, 10.0)
+    k = 2 * math.pi / shallow
+    assert 9.81 * k * math.tanh(k * 10.0) == pytest.approx((2 * math.pi / 8.0) ** 2, rel=1e-9)
+    for period, direction in ((4.0, (1.0, 0.0)), (9.0, (-0.28, 0.96)), (25.0, (0.0, -1.0))):
+        settings = sea.swell_settings(1.0, period, direction, 200.0)
+        length = sea.wavelength(period, 200.0)
+        assert settings["spatial_size"] == round(sea.SWELL_TILE_WAVES * length)
+        k0 = 2 * math.pi / length
+        scale = settings["wind_velocity"] ** 2 / sea.GRAVITY  # Phillips' L = V^2 / g
+        smallest = settings["wave_scale_min"]
+        assert smallest == pytest.approx(sea.SWELL_NARROWNESS * scale)
+        # Phillips exp(-1 / (k L)^2 - (k l)^2) k^-4 peaks where 1 / (k L)^2 - (k l)^2 = 2.
+        ks = k0 * np.exp(np.linspace(-0.3, 0.3, 6001))
+        spectrum = np.exp(-1 / (ks * scale) ** 2 - (ks * smallest) ** 2) * ks**-4.0
+        assert ks[np.argmax(spectrum)] == pytest.approx(k0, rel=0.01)
+        width = np.sqrt((spectrum * np.log(ks / k0) ** 2).sum() / spectrum.sum())
+        assert width < 0.07
+        # Its exponentials stay well within a float's range (Blender multiplies them in single precision).
+        assert 1 / (k0 * scale) ** 2 + (k0 * smallest) ** 2 < 80.0
+        assert sea.angle_direction(settings["wave_direction"]) == pytest.approx(
+            np.array(direction) / math.hypot(*direction)
+        )
+    assert 4 * 0.25 * sea.swell_wave_scale(2.0, 0.25) == pytest.approx(2.0)
+    assert sea.swell_wave_scale(2.0) == pytest.approx(0.5 / sea.SWELL_STD_AT_SCALE_1)
+
+
+def test_the_swell_keys_are_checked_clamped_and_saved(addon_module, tmp_path):
+    schema = addon_module("presets.schema")
+    store = addon_module("presets.store")
+    assert schema.defaults()["sea_swell_height"] == 0.0, "no swell unless asked"
+    values = schema.clamp_values(
+        {"sea_swell_height": 99.0, "sea_swell_period": 0.5, "sea_swell_direction": (0.0, 0.0)}
+    )
+    assert values == {"sea_swell_height": 20.0, "sea_swell_period": 2.0, "sea_swell_direction": (0.0, 1.0)}
+    with pytest.raises(schema.PresetError, match="sea_swell_direction"):
+        schema.check_types({"sea_swell_direction": 3.0})
+    swell = {
+        "sea": True,
+        "sea_swell_height": 1.5,
+        "sea_swell_period": 12.0,
+        "sea_swell_direction": [0.6, -0.8],
+    }
+    path = store.write_preset(tmp_path, "Swell Sea", swell)
+    preset, warnings = store.read_preset(path, user=True)
+    assert warnings == []
+    assert preset.values["sea_swell_height"] == 1.5 and preset.values["sea_swell_period"] == 12.0
+    assert tuple(preset.values["sea_swell_direction"]) == (0.6, -0.8)
+    built_in = {p.id: p for p in store.load_dir(ROOT / "presets")[0]}
+    assert built_in["open_sea"].values["sea_swell_height"] == 0.0
 
 
 def test_the_four_sines_heights_and_normals_agree(addon_module):
