@@ -155,14 +155,17 @@ def height_std_at_scale_1(ocean):
 
     Blender scales its heights by the highest point of the tile at time 0, so this depends on
     the seed (about 15% either way). Measured on a copy: a grid of the FFT's own cells over one
-    tile, with the same waves (no chop, time 0), evaluated once in the context's scene and
-    removed. With damping 1 every wave runs one way only, so this spread over the tile at time 0
-    is also the spread over time at any point."""
+    tile with the same waves (no chop, time 0), in a scene of its own evaluated once (nothing
+    else is), all removed after. With damping 1 every wave runs one way only, so the spread over
+    the tile at time 0 is also the spread over time at any point."""
     cells = max(1, ocean.resolution) ** 2
     step = ocean.spatial_size / cells
-    mesh = bpy.data.meshes.new("Water Sea Measure")
-    obj = None
+    made = []  # (collection, block), removed in reverse
     try:
+        scene = bpy.data.scenes.new("Water Sea Measure")
+        made.append((bpy.data.scenes, scene))
+        mesh = bpy.data.meshes.new("Water Sea Measure")
+        made.append((bpy.data.meshes, mesh))
         axis = np.arange(cells, dtype=np.float64) * step
         x, y = np.meshgrid(axis, axis)
         co = np.zeros((x.size, 3), dtype=np.float32)
@@ -170,7 +173,8 @@ def height_std_at_scale_1(ocean):
         mesh.vertices.add(x.size)
         mesh.vertices.foreach_set("co", co.ravel())
         obj = bpy.data.objects.new("Water Sea Measure", mesh)
-        bpy.context.scene.collection.objects.link(obj)
+        made.append((bpy.data.objects, obj))
+        scene.collection.objects.link(obj)
         copy = obj.modifiers.new("Measure", "OCEAN")
         copy_settings(ocean, copy)
         copy.choppiness = 0.0
@@ -178,16 +182,16 @@ def height_std_at_scale_1(ocean):
         copy.time = 0.0
         copy.use_foam = copy.use_normals = False
         copy.resolution = copy.viewport_resolution = ocean.resolution
-        evaluated = obj.evaluated_get(bpy.context.evaluated_depsgraph_get()).data
-        heights = np.zeros(len(evaluated.vertices) * 3)
-        evaluated.vertices.foreach_get("co", heights)
+        with bpy.context.temp_override(scene=scene, view_layer=scene.view_layers[0]):
+            evaluated = obj.evaluated_get(bpy.context.evaluated_depsgraph_get()).data
+            heights = np.zeros(len(evaluated.vertices) * 3)
+            evaluated.vertices.foreach_get("co", heights)
         std = float(heights[2::3].std())
-    except (RuntimeError, TypeError, ValueError, AttributeError):  # a linked scene, no context
+    except (RuntimeError, TypeError, ValueError, AttributeError):  # no context, data not editable
         return None
     finally:
-        if obj is not None:
-            bpy.data.objects.remove(obj)
-        bpy.data.meshes.remove(mesh)
+        for blocks, block in reversed(made):
+            blocks.remove(block)
     return std if math.isfinite(std) and std > 1e-6 else None
 
 
