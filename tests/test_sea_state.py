@@ -88,8 +88,9 @@ def _inner(sea, share=0.25):
 def test_a_grown_sea_s_significant_height_and_peak_period(scene, wind):
     """Over 30 peak periods, 6 frames a period: 4 standard deviations of the heights within 15%
     of 0.21 U^2 / g, the peak period of the periodogram (a Pierson-Moskowitz spectrum fitted to
-    it) within 15% of 2 pi U / (0.877 g), and the mean period T-1,0 = m-1 / m0 that of Pierson
-    and Moskowitz's shape (0.857 of the peak period) within 10%."""
+    it) within 15% of 2 pi U / (0.877 g), the mean period T-1,0 = m-1 / m0 that of Pierson
+    and Moskowitz's shape (0.857 of the peak period) within 10%, and the waves of the peak period
+    travel downwind (the plane wave most like them within 45 degrees of the wind)."""
     sea = _open_sea(scene, resolution=33, sea_wind_speed=wind)
     inner = _inner(sea)
     target_period = 2 * math.pi * wind / (0.877 * G)
@@ -101,15 +102,21 @@ def test_a_grown_sea_s_significant_height_and_peak_period(scene, wind):
     period = _fitted_peak_period(frequency, power, target_period)
     highest = 1.0 / frequency[np.argmax(np.convolve(power, np.ones(3) / 3, mode="same"))]
     mean_period = (power / frequency).sum() / power.sum()
+    xy = _points(sea)[0][inner]
+    peak_length = G * target_period**2 / (2 * math.pi)
+    times = np.arange(len(heights)) * step
+    _length, travels = _local_plane_wave(xy, heights, times, period, peak_length)
+    off = math.degrees(math.acos(np.clip(travels @ (np.array(WIND) / np.hypot(*WIND)), -1.0, 1.0)))
     print(
         f"{wind:g} m/s, {inner.sum()} points: Hs {height:.3f} m = {height / target_height:.3f} of "
         f"{target_height:.3f} m; Tp {period:.2f} s = {period / target_period:.3f} of {target_period:.2f} s"
         f" (the periodogram's highest bin {highest / target_period:.3f}); "
-        f"T-1,0 {mean_period / period:.3f} of Tp"
+        f"T-1,0 {mean_period / period:.3f} of Tp; its waves travel {off:.0f} degrees off the wind"
     )
     assert height == pytest.approx(target_height, rel=0.15)
     assert period == pytest.approx(target_period, rel=0.15)
     assert mean_period / period == pytest.approx(0.857, rel=0.10)
+    assert off < 45.0, "downwind (the spread about the wind is cos^1.5)"
 
 
 def _local_plane_wave(xy, heights, times, period, wavelength):
@@ -269,6 +276,11 @@ def test_the_swell_keys_through_the_operator_panel_and_api_and_height_0_removes_
     assert [m.name for m in sea.modifiers][:2] == ["Water Swell", "Water Ocean"]
     assert open_sea.swell_values(sea)["sea_swell_period"] == 10.0, "the key's default once removed"
     assert len(_swell_driver(sea)) == 1
+    del sea[open_sea.SWELL_PROPERTY]  # read back from the modifier: the height typical for its seed
+    read = open_sea.swell_values(sea)
+    assert read["sea_swell_period"] == pytest.approx(10.0, rel=0.01)
+    assert read["sea_swell_direction"] == pytest.approx(np.array(SWELL) / np.hypot(*SWELL), abs=1e-3)
+    assert read["sea_swell_height"] == pytest.approx(3.0, rel=0.25)
     with pytest.raises(_api().PresetError, match="sea_swell_height"):
         _api().set_swell(sea, height="2")
     lake = _api().add_water(scene, size=4.0, mirror_setup=False, name="Lake").object

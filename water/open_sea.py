@@ -35,13 +35,16 @@ from .sea_math import (
     FADE_END_TILES,
     FADE_START_TILES,
     FOAM_BIAS,
+    GRAVITY,
     HEIGHT_STD_AT_SCALE_1,
     RESOLUTIONS,
     SPECTRA,
     SWELL_ALIGNMENT,
     SWELL_STD_AT_SCALE_1,
+    SWELL_TILE_WAVES,
     WIND_ALIGNMENT,
     WIND_DAMPING,
+    angle_direction,
     ocean_resolution,
     slope_expressions,
     swell_settings,
@@ -206,18 +209,25 @@ def swell_modifier(obj):
 
 
 def swell_values(obj):
-    """The swell's values (`SWELL_KEYS`) as last asked; height 0 without a swell."""
+    """The swell's values (`SWELL_KEYS`): as last asked, else read back from its modifier (its
+    height typical, `SWELL_STD_AT_SCALE_1`); height 0 without a swell."""
     from ..presets import schema
 
     values = {key: schema.BY_KEY[key].default for key in SWELL_KEYS}
-    stored = obj.get(SWELL_PROPERTY) if obj is not None else None
-    if swell_modifier(obj) is None:
+    swell = swell_modifier(obj)
+    if swell is None:
         values["sea_swell_height"] = 0.0
-    elif stored is not None:
-        try:
-            values = dict(zip(SWELL_KEYS, (float(stored[0]), float(stored[1]), tuple(stored[2:4]))))
-        except (TypeError, ValueError, IndexError, KeyError):
-            pass
+        return values
+    stored = obj.get(SWELL_PROPERTY)
+    try:
+        return dict(zip(SWELL_KEYS, (float(stored[0]), float(stored[1]), tuple(map(float, stored[2:4])))))
+    except (TypeError, ValueError, IndexError, KeyError):  # none kept, or not as the add-on keeps it
+        pass
+    k = 2.0 * math.pi * SWELL_TILE_WAVES / max(swell.spatial_size, 1)
+    omega = math.sqrt(GRAVITY * k * math.tanh(k * max(swell.depth, 1e-3)))
+    values["sea_swell_height"] = round(4.0 * swell.wave_scale * SWELL_STD_AT_SCALE_1, 2)
+    values["sea_swell_period"] = round(2.0 * math.pi / omega, 2)
+    values["sea_swell_direction"] = tuple(round(v, 3) for v in angle_direction(swell.wave_direction))
     return values
 
 
