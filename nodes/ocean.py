@@ -49,9 +49,10 @@ WHITECAP_BLOB_TILE = (60.0, 30.0)
 WHITECAP_TILE = (12.0, 6.0)
 WHITECAP_BLOB_SOFTNESS = 0.01
 WHITECAP_FOAM = 0.9  # f inside a whitecap: the lace covers WHITECAP_FOAM - SOFTNESS / 2 of it
-# The bubbles' share per share of the sea asked: 1 / (crest share x lace cover x what of a
-# crest's points shows from above), the last measured.
-WHITECAP_SEEN = 1.0
+# The bubbles' share per share of the sea asked: 1 / (crest share x lace cover x how much more
+# of the sea the crests and the foam they leave behind mark, seen from above), the last measured
+# (tests/test_whitecaps.py: 1.2).
+WHITECAP_SEEN = 1.2
 WHITECAP_BLOB_GAIN = 1.0 / (sea_fade.CREST_SHARE * (WHITECAP_FOAM - foam_map.SOFTNESS / 2) * WHITECAP_SEEN)
 
 

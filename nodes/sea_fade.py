@@ -72,6 +72,98 @@ def _bisection():
 
 _BISECTION_NODES, _BISECTION_LINKS, _THRESHOLD = _bisection()
 
+# The trail: a crest's foam stays behind it and fades. A point the crest left k steps ago is
+# marked where the crest stands now, k Trail Steps downwind; it keeps TRAIL_FADE^k of the mark.
+# The sea's mesh is a grid (`water/grid.py`: index = row x n + column) evenly spaced in its
+# middle, so "k steps downwind" is an index offset: no search.
+TRAIL_STEPS = 3
+TRAIL_SECONDS = 0.5
+TRAIL_FADE = 0.6  # per step: about a second and a half to a fifth
+
+
+def _trail():
+    """Nodes and links: the crest mark, or the faded marks of the crests that passed, whichever
+    is more. Returns (nodes, links, the result's socket)."""
+    column = 9 + 2 * BISECTION_STEPS
+    nodes = {
+        "count": Node("GeometryNodeAttributeDomainSize", column, {"component": "MESH"}, label="points"),
+        "side": math("SQRT", column, "n = points a side"),
+        "side_round": math("ROUND", column + 1, "n"),
+        "middle_index": math("MULTIPLY_ADD", column + 1, "(points - 1) / 2: the centre", b=0.5, c=-0.5),
+        "next_index": math("ADD", column + 2, "its neighbour", b=1.0),
+        "at_middle": Node(
+            "GeometryNodeSampleIndex",
+            column + 2,
+            {"data_type": "FLOAT_VECTOR", "domain": "POINT"},
+            label="rest",
+        ),
+        "at_next": Node(
+            "GeometryNodeSampleIndex",
+            column + 2,
+            {"data_type": "FLOAT_VECTOR", "domain": "POINT"},
+            label="rest",
+        ),
+        "spacing": vmath("DISTANCE", column + 3, "the middle's spacing"),
+        "step_split": Node("ShaderNodeSeparateXYZ", column + 3, label="Trail Step"),
+        "cols": math("DIVIDE", column + 4, "columns"),
+        "rows": math("DIVIDE", column + 4, "rows"),
+        "cols_round": math("ROUND", column + 5, "columns"),
+        "rows_round": math("ROUND", column + 5, "rows"),
+        "shift": math("MULTIPLY_ADD", column + 6, "index shift: rows n + columns"),
+        "index": Node("GeometryNodeInputIndex", column + 6),
+    }
+    links = [
+        ("input:Geometry", "count:Geometry"),
+        ("count:Point Count", "side:#0"),
+        ("side:Value", "side_round:#0"),
+        ("count:Point Count", "middle_index:#0"),
+        ("middle_index:Value", "next_index:#0"),
+        ("input:Geometry", "at_middle:Geometry"),
+        ("rest:Attribute", "at_middle:Value"),
+        ("middle_index:Value", "at_middle:Index"),
+        ("input:Geometry", "at_next:Geometry"),
+        ("rest:Attribute", "at_next:Value"),
+        ("next_index:Value", "at_next:Index"),
+        ("at_middle:Value", "spacing:#0"),
+        ("at_next:Value", "spacing:#1"),
+        ("input:Trail Step", "step_split:Vector"),
+        ("step_split:X", "cols:#0"),
+        ("spacing:Value", "cols:#1"),
+        ("step_split:Y", "rows:#0"),
+        ("spacing:Value", "rows:#1"),
+        ("cols:Value", "cols_round:#0"),
+        ("rows:Value", "rows_round:#0"),
+        ("rows_round:Value", "shift:#0"),
+        ("side_round:Value", "shift:#1"),
+        ("cols_round:Value", "shift:#2"),
+    ]
+    kept = "crest:Result"
+    for k in range(1, TRAIL_STEPS + 1):
+        nodes[f"trail_index_{k}"] = math("MULTIPLY_ADD", column + 7, f"index + {k} shift", a=float(k))
+        nodes[f"trail_mark_{k}"] = Node(
+            "GeometryNodeSampleIndex",
+            column + 8,
+            {"data_type": "FLOAT", "domain": "POINT", "clamp": True},
+            label=f"the mark {k} steps downwind",
+        )
+        nodes[f"trail_fade_{k}"] = math("MULTIPLY", column + 9, f"x {TRAIL_FADE:g}^{k}", b=TRAIL_FADE**k)
+        nodes[f"trail_{k}"] = math("MAXIMUM", column + 10, "the more")
+        links += [
+            ("shift:Value", f"trail_index_{k}:#1"),
+            ("index:Index", f"trail_index_{k}:#2"),
+            ("input:Geometry", f"trail_mark_{k}:Geometry"),
+            ("crest:Result", f"trail_mark_{k}:Value"),
+            (f"trail_index_{k}:Value", f"trail_mark_{k}:Index"),
+            (f"trail_mark_{k}:Value", f"trail_fade_{k}:#0"),
+            (kept, f"trail_{k}:#0"),
+            (f"trail_fade_{k}:Value", f"trail_{k}:#1"),
+        ]
+        kept = f"trail_{k}:Value"
+    return nodes, tuple(links), kept
+
+
+_TRAIL_NODES, _TRAIL_LINKS, _TRAIL = _trail()
+
 SPEC = GroupSpec(
     name=NAME,
     version=VERSION,
@@ -105,6 +197,14 @@ SPEC = GroupSpec(
             subtype="FACTOR",
             tooltip="Share of the sea (its highest crests) where whitecaps may break; how many do is "
             "the ocean shading's Whitecap Coverage",
+        ),
+        Socket(
+            "Trail Step",
+            "NodeSocketVector",
+            (0.0, 0.0, 0.0),
+            subtype="TRANSLATION",
+            tooltip=f"How far the crests run in {TRAIL_SECONDS:g} s (along the wind; the add-on sets it): "
+            "the foam they leave behind fades over the next few such steps",
         ),
     ),
     outputs=(Socket("Geometry", "NodeSocketGeometry"),),
@@ -148,6 +248,7 @@ SPEC = GroupSpec(
             {"To Min": 0.0, "To Max": 1.0},
             label="on a crest",
         ),
+        **_TRAIL_NODES,
         "offset": vmath("SUBTRACT", 2, "displacement"),
         "kept": vmath("SCALE", 4, "displacement kept"),
         "placed": vmath("ADD", 5, "rest + kept"),
@@ -191,7 +292,8 @@ SPEC = GroupSpec(
         ("z:Value", "crest:Value"),
         (_THRESHOLD, "crest:From Min"),
         ("crest_edge:Value", "crest:From Max"),
-        ("crest:Result", "whitecaps:#0"),
+        *_TRAIL_LINKS,
+        (_TRAIL, "whitecaps:#0"),
         ("near:Result", "whitecaps:#1"),
         ("input:Geometry", "move:Geometry"),
         ("placed:Vector", "move:Position"),

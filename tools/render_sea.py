@@ -1,6 +1,8 @@
 """Renders the open sea: with whitecaps and a floating boat-like object (out/open_sea.png), and
 meeting a low sandy island (out/open_sea_shore.png: the bed through the shallows, shore foam,
-caustics), both copied to docs/. The sky is the ocean demo's generated image
+caustics), both copied to docs/; and the sea states (docs/open_sea_states.png): 5, 15 and 25 m/s
+(columns) from 3 m and from 40 m up (rows), each with the boat (`tools/demo sea states`). The sky
+is the ocean demo's generated image
 (`render_ocean.sky_world`); the seas are the `open_sea` preset at 15 and 6 m/s; the boat (a hull
 and a cabin, joined) floats with `api.float_on_water`. Run with `tools/demo sea`
 (`tools/demo sea shore`: the island only).
@@ -8,9 +10,11 @@ and a cabin, joined) floats with `api.float_on_water`. Run with `tools/demo sea`
 
 import math
 import shutil
+import struct
 import sys
 import tempfile
 import time
+import zlib
 
 from render_ocean import sky_world
 
@@ -88,12 +92,71 @@ def render(bpy, scene, name, what):
     shutil.copyfile(OUT / f"{name}.png", DOCS / f"{name}.png")
 
 
+STATES = (5.0, 15.0, 25.0)  # m/s: a gentle breeze, a near gale, a storm (Beaufort 3, 7, 10)
+STATE_SIZE = (480, 270)
+VIEWS = (((0.0, -4.0, 3.0), (6.0, 40.0, 0.0)), ((0.0, -70.0, 40.0), (12.0, 90.0, 0.0)))
+
+
+def write_png(path, rgb):
+    """An 8-bit RGB PNG of a float (H, W, 3) array, row 0 at the top."""
+    import numpy as np
+
+    data = (np.clip(rgb, 0.0, 1.0) * 255.0 + 0.5).astype(np.uint8)
+    raw = b"".join(b"\0" + row.tobytes() for row in data)
+
+    def chunk(kind, body):
+        return (
+            struct.pack(">I", len(body))
+            + kind
+            + body
+            + struct.pack(">I", zlib.crc32(kind + body) & 0xFFFFFFFF)
+        )
+
+    header = struct.pack(">IIBBBBB", data.shape[1], data.shape[0], 8, 2, 0, 0, 0)
+    with open(path, "wb") as out:
+        out.write(
+            b"\x89PNG\r\n\x1a\n"
+            + chunk(b"IHDR", header)
+            + chunk(b"IDAT", zlib.compress(raw))
+            + chunk(b"IEND", b"")
+        )
+
+
+def sea_states(bpy):
+    """The sea at each of STATES from each of VIEWS, with the boat, as one sheet (columns: the
+    winds; rows: 3 m and 40 m up)."""
+    import numpy as np
+
+    tiles = {}
+    for wind in STATES:
+        scene, sea = sunny_sea(bpy, (62.0, 0.0, 200.0), wind)
+        scene.render.resolution_x, scene.render.resolution_y = STATE_SIZE
+        harness.addon("api").float_on_water(boat(bpy), sea, tilt_damping=0.3)
+        for row, (eye, target) in enumerate(VIEWS):
+            camera = harness.add_camera(scene, eye, target, lens=28)
+            camera.data.clip_end = 20000.0
+            scene.camera = camera
+            scene.frame_set(60)
+            name = f"open_sea_{wind:g}_{eye[2]:g}m"
+            print(f"[{name}] {wind:g} m/s from {eye[2]:g} m up ...", flush=True)
+            tiles[row, wind] = harness.render(scene, OUT / f"{name}.png")[..., :3]
+    sheet = np.concatenate(
+        [np.concatenate([tiles[row, wind] for wind in STATES], axis=1) for row in range(len(VIEWS))], axis=0
+    )
+    write_png(OUT / "open_sea_states.png", sheet)
+    shutil.copyfile(OUT / "open_sea_states.png", DOCS / "open_sea_states.png")
+
+
 def main():
     start = time.monotonic()
     bpy = harness.start()
     harness.install(harness.build_zip(tempfile.mkdtemp(prefix="water_surface_dist_")))
     OUT.mkdir(parents=True, exist_ok=True)
     DOCS.mkdir(parents=True, exist_ok=True)
+    if sys.argv[1:] == ["states"]:
+        sea_states(bpy)
+        print(f"wrote {OUT / 'open_sea_states.png'} in {time.monotonic() - start:.0f} s", flush=True)
+        return 0
     # The open sea at 6 m/s round a sandy island, from 14 m up.
     scene, _sea = sunny_sea(bpy, (45.0, 0.0, 150.0), 6.0, before_sea=lambda: island(bpy))
     harness.add_camera(scene, (6.0, -2.0, 14.0), (-4.0, 34.0, 0.0), lens=30)

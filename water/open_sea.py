@@ -3,9 +3,9 @@
 Blender's Ocean modifier (FFT waves on the Phillips, Pierson-Moskowitz, JONSWAP or TMA
 spectrum, with choppiness and foam) displaces the sea's mesh (`sea_mesh.py`); it has no shading
 and no horizon of its own. This module chooses its tile and resolution, drives its time by the
-scene's clock (a simple expression, no Python at render) and turns its foam on; `Water Sea
-Fade` (`nodes/sea_fade.py`) then flattens the far sea and hands the foam to the ocean shading
-as `water_whitecaps`.
+scene's clock (a simple expression, no Python at render); `Water Sea Fade`
+(`nodes/sea_fade.py`) then flattens the far sea and marks the highest crests for the ocean
+shading's whitecaps (`water_whitecaps`; the modifier's own foam is off: not read).
 
 Choices, from the wind speed V (m/s): the tile (`spatial_size`) holds TILE_WAVES lengths
 2 pi V^2 / g (4.6 of a grown sea's peak waves), at least MIN_TILE metres; the FFT grid is
@@ -34,7 +34,6 @@ from .editable import check_editable
 from .sea_math import (
     FADE_END_TILES,
     FADE_START_TILES,
-    FOAM_BIAS,
     GRAVITY,
     HEIGHT_STD_AT_SCALE_1,
     RESOLUTIONS,
@@ -140,9 +139,9 @@ def set_sea(obj, values, scene):
     ocean.spatial_size = tile_size(wind)
     ocean.resolution = ocean.viewport_resolution = resolution
     ocean.use_normals = True
-    ocean.use_foam = True
-    ocean.foam_layer_name = sea_fade.OCEAN_FOAM_ATTRIBUTE
-    ocean.foam_coverage = FOAM_BIAS
+    # The whitecaps come from the crests' heights (`sea_fade.py`): the modifier's own foam (its
+    # Jacobian, per frame) is not read, so not computed.
+    ocean.use_foam = False
     ocean.wave_scale = wave_scale(wind, ocean.spectrum, height_std_at_scale_1(ocean))
     drive_clock(ocean, scene, prop="time")
     _set_fade(fade, FADE_START_TILES * ocean.spatial_size, FADE_END_TILES * ocean.spatial_size)

@@ -45,9 +45,6 @@ HEIGHT_STD_AT_SCALE_1 = {
     "JONSWAP": 0.23,
     "TEXEL_MARSEN_ARSLOE": 0.23,
 }
-# Foam: the modifier's own coverage bias, 0. (A negative bias measured well on the evaluated mesh
-# but left no foam at all in renders: the render's foam is weaker than the viewport's.)
-FOAM_BIAS = 0.0
 SPECTRA = {
     "phillips": "PHILLIPS",
     "pierson_moskowitz": "PIERSON_MOSKOWITZ",

@@ -30,3 +30,9 @@ def coverage_expression(variable="u", per_wind=1.0):
     wind = variable if per_wind == 1.0 else f"({variable} / {per_wind:g})"
     fade = f"min(1, max(0, ({wind} - {CALM:g}) / {BREAKING - CALM:g}))"
     return f"min({MAX_COVERAGE:g}, {MONAHAN[0]:g} * pow(max({wind}, 0), {MONAHAN[1]:g}) * {fade})"
+
+
+def crest_speed(wind_speed):
+    """Metres a second the crests of a grown sea's peak waves run at: g / omega_p, with Pierson
+    and Moskowitz's omega_p = 0.877 g / U, so U / 0.877."""
+    return max(wind_speed, 0.0) / 0.877
