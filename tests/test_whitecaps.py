@@ -7,8 +7,6 @@ un-faded middle, at three moments a few seconds apart: the whitecaps gather on t
 smaller view would see one crest or none. The wind is (0.8, 0.6), off the axes.
 """
 
-import math
-
 import bpy
 import numpy as np
 import pytest
@@ -69,7 +67,8 @@ def _foam_views(sea_scene, wind, render, frames=FRAMES):
         "Debug View"
     ].default_value = 7
     span = VIEW_TILES * ocean.spatial_size
-    camera = scene.camera
+    scene.camera = camera = bpy.data.objects["Down"]
+    scene.render.resolution_x = scene.render.resolution_y = PIXELS
     camera.data.ortho_scale = span
     camera.location = (0.05 * span, -0.03 * span, 40.0 + 2.0 * span)
     camera.data.clip_end = 100.0 + 4.0 * span
@@ -114,10 +113,11 @@ def test_whitecaps_cover_as_much_of_the_sea_as_monahan_measured(foam, render, wi
     assert 0.5 * _monahan(wind) < share < 2.0 * _monahan(wind)
 
 
-@pytest.mark.parametrize("wind", [3.0, 5.0])
+@pytest.mark.parametrize("wind", [5.0])
 def test_light_winds_raise_next_to_no_whitecaps(foam, render, wind):
     """Under 0.1% of the sea (Monahan's fit gives 0.09% at 5 m/s; the add-on's coverage fades
-    out below 8 m/s and is none below 4): one moment is enough."""
+    out below 8 m/s and is none below 4, tests/plain/test_whitecap_math.py, so 3 m/s is not
+    rendered: its small tile's far triangles cost software EEVEE 25 s a frame): one moment."""
     views, _pixel = foam(wind, render, frames=FRAMES[:1])
     share = np.mean([(view > 0.5).mean() for view in views])
     print(f"{wind:g} m/s: whitecaps {share:.5f} of the sea")
@@ -173,6 +173,7 @@ def test_from_a_boat_the_nearest_hundred_metres_show_whitecaps(sea_scene, render
     harness.addon("nodes.ocean_material").ocean_nodes(sea.active_material)[1].inputs[
         "Debug View"
     ].default_value = 7
+    scene.render.resolution_x, scene.render.resolution_y = 192, 108
     boat = harness.add_camera(scene, (2.0, -5.0, 3.0), (2.0 + 100.0 * 0.6, -5.0 + 100.0 * 0.8, 3.0 - 21.0))
     scene.camera = boat
     shares = []
@@ -182,7 +183,6 @@ def test_from_a_boat_the_nearest_hundred_metres_show_whitecaps(sea_scene, render
         shares.append((view[view.shape[0] // 2 :] > 0.5).mean())
     print(f"from 3 m up: whitecaps {np.round(shares, 4)} of the lower half")
     assert np.mean(shares) >= 0.01
-    assert math.isfinite(np.mean(shares))
 
 
 def test_a_crest_s_foam_fades_within_seconds_after_it_passes(scene):
