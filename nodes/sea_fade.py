@@ -56,8 +56,7 @@ def _bisection():
         )
         links += [
             ("z:Value", f"over_{i}:#0"),
-            ("input:Geometry", f"share_{i}:Geometry"),
-            ("middle:Value", f"share_{i}:Selection"),
+            ("middle_points:Selection", f"share_{i}:Geometry"),
             (f"over_{i}:Value", f"share_{i}:Attribute"),
             (f"share_{i}:Mean", f"more_{i}:#0"),
             ("input:Crest Share", f"more_{i}:#1"),
@@ -230,6 +229,8 @@ SPEC = GroupSpec(
         # The crest's height z in standard deviations of the middle's heights, this frame.
         "rise": Node("ShaderNodeSeparateXYZ", 3, label="displacement"),
         "middle": math("LESS_THAN", 3, "in the un-faded middle"),
+        # The statistics read the middle's points only (a twentieth of the sea's, or fewer).
+        "middle_points": Node("GeometryNodeSeparateGeometry", 4, {"domain": "POINT"}, label="the middle"),
         "stats": Node(
             "GeometryNodeAttributeStatistic",
             4,
@@ -279,8 +280,9 @@ SPEC = GroupSpec(
         ("offset:Vector", "rise:Vector"),
         ("distance:Value", "middle:#0"),
         ("input:Fade Start", "middle:#1"),
-        ("input:Geometry", "stats:Geometry"),
-        ("middle:Value", "stats:Selection"),
+        ("input:Geometry", "middle_points:Geometry"),
+        ("middle:Value", "middle_points:Selection"),
+        ("middle_points:Selection", "stats:Geometry"),
         ("rise:Z", "stats:Attribute"),
         ("stats:Standard Deviation", "spread:#0"),
         ("rise:Z", "above:#0"),
