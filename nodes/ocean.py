@@ -25,7 +25,6 @@ from . import bump_uv, caustics, foam_map, sea_fade, water_surface
 from .bump_uv import TIME_INPUT
 from .spec import (
     BUMP_IMAGE,
-    FOAM_IMAGE,
     GroupSpec,
     Node,
     Part,
@@ -62,12 +61,7 @@ def _tile_read(key, tile, column, label, interpolation="Linear"):
         f"{key}_u": math("DIVIDE", column, "along / length", b=tile[0]),
         f"{key}_v": math("DIVIDE", column, "across / width", b=tile[1]),
         f"{key}_uv": Node("ShaderNodeCombineXYZ", column + 1),
-        f"{key}_tile": Node(
-            "ShaderNodeTexImage",
-            column + 2,
-            {"extension": "REPEAT", "interpolation": interpolation, "image": FOAM_IMAGE},
-            label=label,
-        ),
+        f"{key}_tile": water_surface.foam_tile(column + 2, label, interpolation),
     }
 
 
@@ -636,13 +630,7 @@ FULL_SHADE_SPEC = GroupSpec(
         "on_some": math("MULTIPLY", 31, "x any share"),
         "crest": math("MULTIPLY", 32, "f", b=WHITECAP_FOAM),
         "cap_sum": math("ADD", 32, "b + f"),
-        "cover": Node(
-            "ShaderNodeMapRange",
-            32,
-            {"interpolation_type": "LINEAR", "clamp": True},
-            {1: 1.0, 2: 1.0 + foam_map.SOFTNESS, 3: 0.0, 4: 1.0},
-            label=f"whitecaps: clamp((b + f - 1) / {foam_map.SOFTNESS:g})",
-        ),
+        "cover": water_surface.foam_breakup(32, "whitecaps: "),
         "shore_foam": group_node(water_surface.FOAM_NAME, 28, "shore foam coverage"),
         "foam_cover": math("MAXIMUM", 30, "foam cover"),
         # Lit from 4.5; EEVEE in 4.2 drops the traced refraction beside a diffuse closure, so there

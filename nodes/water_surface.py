@@ -449,6 +449,28 @@ def _depth_nodes():
     return nodes, links
 
 
+def foam_tile(column, label, interpolation="Linear"):
+    """A read of the add-on's foam tile (equalised: its values evenly spread over 0..1)."""
+    return Node(
+        "ShaderNodeTexImage",
+        column,
+        {"extension": "REPEAT", "interpolation": interpolation, "image": FOAM_IMAGE},
+        label=label,
+    )
+
+
+def foam_breakup(column, what=""):
+    """The foam's rule, one for the shore and the whitecaps: the tile b thresholded by the foam f
+    (fed to its Value as b + f), clamp((b + f - 1) / SOFTNESS): about f - SOFTNESS / 2 covered."""
+    return Node(
+        "ShaderNodeMapRange",
+        column,
+        {"interpolation_type": "LINEAR", "clamp": True},
+        {1: 1.0, 2: 1.0 + foam_map.SOFTNESS, 3: 0.0, 4: 1.0},
+        label=f"{what}clamp((b + f - 1) / {foam_map.SOFTNESS:g})",
+    )
+
+
 FOAM_SPEC = GroupSpec(
     name=FOAM_NAME,
     version=1,
@@ -458,12 +480,7 @@ FOAM_SPEC = GroupSpec(
     nodes={
         "flag": attribute(FLAG_ATTRIBUTE, 1, "water_surroundings (1 = measured)"),
         "shore": attribute(SHORE_ATTRIBUTE, 1, "water_shore_distance (m)"),
-        "tile": Node(
-            "ShaderNodeTexImage",
-            1,
-            {"extension": "REPEAT", "interpolation": "Linear", "image": FOAM_IMAGE},
-            label="foam tile b",
-        ),
+        "tile": foam_tile(1, "foam tile b"),
         # f = 1 - smoothstep(d / Foam Width): 1 at the waterline, 0 from Foam Width on.
         "falloff": Node(
             "ShaderNodeMapRange",
@@ -474,13 +491,7 @@ FOAM_SPEC = GroupSpec(
         ),
         "sum": math("ADD", 3, "b + f"),
         # clamp((b + f - 1) / softness): the tile, thresholded at 1 - f.
-        "breakup": Node(
-            "ShaderNodeMapRange",
-            4,
-            {"interpolation_type": "LINEAR", "clamp": True},
-            {1: 1.0, 2: 1.0 + foam_map.SOFTNESS, 3: 0.0, 4: 1.0},
-            label=f"clamp((b + f - 1) / {foam_map.SOFTNESS:g})",
-        ),
+        "breakup": foam_breakup(4),
         "amount": math("MULTIPLY", 5, "x Foam Amount"),
         "coverage": math("MULTIPLY", 6, "x surroundings flag", clamp=True),
     },

@@ -298,7 +298,7 @@ def drive_slopes(obj, ocean, first=False):
     drivers on the modifier's settings, so changing the wind in the panel changes them too).
     Bump Strength becomes 1 when the sea is made (a multiplier the artist may change after).
     The whitecaps' coverage follows the wind the same way (`whitecaps.py`)."""
-    drive_whitecaps(obj, ocean)
+    drive_whitecaps(obj, ocean, sea_modifiers(obj)[1])
     normal = next((nodes[0] for slot in obj.material_slots if (nodes := ocean_nodes(slot.material))), None)
     if normal is None:
         return

@@ -24,10 +24,8 @@ def whitecap_coverage(wind_speed):
     return min(MAX_COVERAGE, monahan(wind_speed) * fade)
 
 
-def coverage_expression(variable="u", per_wind=1.0):
-    """`whitecap_coverage` as a simple-expression driver of `variable`, which is `per_wind` times
-    the wind speed (the Ocean modifier's wind, when it is set to a multiple of the wind)."""
-    wind = variable if per_wind == 1.0 else f"({variable} / {per_wind:g})"
+def coverage_expression(wind="u"):
+    """`whitecap_coverage` as a simple-expression driver of the variable `wind` (m/s)."""
     fade = f"min(1, max(0, ({wind} - {CALM:g}) / {BREAKING - CALM:g}))"
     return f"min({MAX_COVERAGE:g}, {MONAHAN[0]:g} * pow(max({wind}, 0), {MONAHAN[1]:g}) * {fade})"
 

@@ -10,38 +10,25 @@ import bpy
 from ..nodes import sea_fade
 from ..nodes.material import drive_socket
 from ..nodes.ocean_material import ocean_nodes
-from ..nodes.ownership import role_of
 from .waves import set_wave_input
 from .whitecap_math import coverage_expression, crest_speed
 
 COVERAGE_INPUT = "Whitecap Coverage"
 
 
-def drive_whitecaps(obj, ocean, per_wind=1.0):
-    """Drives the coverage input of every ocean shading on `obj` from `ocean`'s wind (which is
-    `per_wind` times the wind speed), and sets the fade's trail. Groups from before these inputs
-    existed are left as they are."""
+def drive_whitecaps(obj, ocean, fade):
+    """Drives the coverage input of every ocean shading on `obj` from `ocean`'s wind speed, and
+    sets the trail on `fade`, the sea's fade modifier.
+    Groups from before these inputs existed are left as they are."""
     path = f'modifiers["{bpy.utils.escape_identifier(ocean.name)}"].wind_velocity'
     for slot in obj.material_slots:
         nodes = ocean_nodes(slot.material)
         if not nodes or COVERAGE_INPUT not in nodes[1].inputs:
             continue
         socket = nodes[1].inputs[COVERAGE_INPUT]
-        drive_socket(socket, None, coverage_expression("u", per_wind), [("u", "OBJECT", obj, path)])
-    fade = _fade_after(obj, ocean)
-    if fade is not None and "Trail Step" in [item.name for item in fade.node_group.interface.items_tree]:
+        drive_socket(socket, None, coverage_expression("u"), [("u", "OBJECT", obj, path)])
+    if "Trail Step" in [item.name for item in fade.node_group.interface.items_tree]:
         # The modifier's waves at angle a travel along (-cos a, sin a) (`sea_math.wave_angle`).
-        run = crest_speed(ocean.wind_velocity / per_wind) * sea_fade.TRAIL_SECONDS
+        run = crest_speed(ocean.wind_velocity) * sea_fade.TRAIL_SECONDS
         angle = ocean.wave_direction
         set_wave_input(fade, "Trail Step", (-math.cos(angle) * run, math.sin(angle) * run, 0.0))
-
-
-def _fade_after(obj, ocean):
-    """The sea's fade modifier, just after `ocean`, or None."""
-    modifiers = list(obj.modifiers)
-    index = next((i for i, modifier in enumerate(modifiers) if modifier == ocean), None)
-    if index is None or index + 1 >= len(modifiers):
-        return None
-    fade = modifiers[index + 1]
-    group = fade.node_group if fade.type == "NODES" else None
-    return fade if group is not None and role_of(group) == sea_fade.NAME else None
