@@ -211,12 +211,13 @@ def write_values(water: bpy.types.Object, values: dict) -> None:
 
 
 def switch_part(water: bpy.types.Object, part: str, on: bool = True) -> list[str]:
-    """Turns an optional part of a lake's shading on or off: "depth" (colour by depth), "foam"
-    (shore foam) or "caustics". A part that is off is not in the shader at all, so it costs
-    nothing; `write_values` does the same when a switch (Absorption, Foam Amount, Caustics) crosses
-    0. Returns what it did, in words.
+    """Turns an optional part of a water's shading on or off: on a lake "depth" (colour by depth),
+    "foam" (shore foam) or "caustics"; on the ocean shading (the seeds' ocean, the open sea)
+    "caustics". A part that is off is not in the shader at all, so it costs nothing;
+    `write_values` does the same when a switch (Absorption, Foam Amount, Caustics) crosses 0.
+    Returns what it did, in words.
 
-    ValueError for another word or a water without lake shading; NotEditableError for linked water.
+    ValueError for another word; NotEditableError for linked water.
     """
     material = _values.water_material(water)
     check_editable(water, material)

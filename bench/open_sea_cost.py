@@ -12,7 +12,10 @@ Three waters with the same number of vertices (385 x 385), one in the scene at a
 Per-frame evaluation: milliseconds to evaluate the object over 24 frames (the best of 5
 interleaved rounds). Steady render: EEVEE, 256 x 144, 8 samples, the best of 3 interleaved
 rounds after a first render. Ratios are to the Ocean modifier alone. Run with
-`tools/bench open_sea_cost`.
+`tools/bench open_sea_cost`; `--breakdown` adds where the sea's render goes: the same sea under
+the Principled water (its mesh's cost), with its caustics built in (`Caustics` 1, what the
+preset had before they became a part), and the Ocean modifier alone casting no shadow (the
+sea's water casts none, as the add-on sets it).
 """
 
 import math
@@ -52,6 +55,32 @@ def ocean_alone(bpy, scene, sea_ocean, tile):
     return obj
 
 
+def breakdown(bpy, scene, api, sea, alone):
+    """Copies of the sea and of the modifier alone that take one thing apart each."""
+
+    def copy(obj, name):
+        twin = obj.copy()
+        twin.data = obj.data.copy()
+        twin.name = name
+        scene.collection.objects.link(twin)
+        return twin
+
+    principled = copy(sea, "Sea Under Principled")
+    principled.data.materials.clear()
+    principled.data.materials.append(alone.data.materials[0])
+    caustics = copy(sea, "Sea With Caustics")
+    caustics.data.materials.clear()
+    caustics.data.materials.append(sea.active_material.copy())
+    api.write_values(caustics, {"caustics": 1.0})
+    unshadowed = copy(alone, "Ocean Alone No Shadow")
+    unshadowed.visible_shadow = False
+    return {
+        "open_sea's mesh under the Principled water": principled,
+        "open_sea with its caustics built in (Caustics 1)": caustics,
+        "Ocean modifier alone, casting no shadow": unshadowed,
+    }
+
+
 def evaluation_ms(bpy, scene, obj):
     """Milliseconds a frame to evaluate `obj` (its mesh read back) over FRAMES frames."""
     start = time.perf_counter()
@@ -77,11 +106,14 @@ def main():
     seeds = api.add_water(
         scene, preset="ocean", size=float(tile), resolution=POINTS, name="Seeds Ocean"
     ).object
+    alone = ocean_alone(bpy, scene, sea_ocean, tile)
     waters = {
-        "Ocean modifier alone + Principled water": ocean_alone(bpy, scene, sea_ocean, tile),
+        "Ocean modifier alone + Principled water": alone,
         "open_sea (Ocean modifier + fade + ocean shading)": sea,
         "seeds' ocean (Water Waves + ocean shading)": seeds,
     }
+    if "--breakdown" in sys.argv:
+        waters |= breakdown(bpy, scene, api, sea, alone)
     counts = {name: len(obj.data.vertices) for name, obj in waters.items()}
     harness.add_camera(scene, (0.0, -20.0, 8.0), (0.0, 60.0, 0.0), lens=28.0)
 

@@ -21,6 +21,8 @@ Two groups, because a shader group cannot hold the
 world's image: the lookup sits between them in the material.
 """
 
+from dataclasses import replace
+
 from . import bump_uv, caustics, foam_map, sea_fade, water_surface
 from .bump_uv import TIME_INPUT
 from .spec import (
@@ -475,6 +477,8 @@ DEBUG_VIEWS = (
 )
 # The traced sky: a sharp Glossy closure at (1 - F) in place of the Sky input's colour. Built
 # only into the group's "+ Traced Sky" variant (a material whose world has no image takes it).
+# The caustics on the bed (`caustics.py`): built only into the "+ Caustics" variants, while
+# Caustics is above 0. Without them the bed is lit by the factor 1 (no caustics), as the lake's.
 PARTS = (
     Part(
         "traced_sky",
@@ -482,6 +486,13 @@ PARTS = (
         TRACED_SKY,
         1.0,
         off_links=(("water_shader:Shader", "mix:#1"),),
+    ),
+    Part(
+        "caustics",
+        "Caustics",
+        caustics.CAUSTICS_INPUT.name,
+        1.0,
+        off_values={"lit_bed": {"Scale": 1.0}, "view_8": {0: (1.0, 1.0, 1.0)}},
     ),
 )
 
@@ -542,8 +553,9 @@ _DEBUG_NODES, _DEBUG_LINKS = _debug_nodes()
 FULL_SHADE_SPEC = GroupSpec(
     name=SHADE_NAME,
     # 2: whitecaps; 3: depth colour, shore foam and caustics from the surroundings; 4: the traced
-    # sky and the debug views; 5: whitecaps broken up by the foam tile, as the shore's foam
-    version=5,
+    # sky and the debug views; 5: whitecaps broken up by the foam tile, as the shore's foam; 6: the
+    # caustics an optional part (`PARTS`: older groups have them built in, `retire_legacy_shades`)
+    version=6,
     description="Ocean colour: deep blue and the reflected sky by the ocean Fresnel, plus the glint; "
     "white lit foam on the crests; with the surroundings, the bed seen through shallow water, "
     "shore foam and caustics",
@@ -587,7 +599,7 @@ FULL_SHADE_SPEC = GroupSpec(
         "emit": Node("ShaderNodeEmission", 30, values={"Strength": 1.0}, label="unlit"),
         # The bed, refracted, at F T x the caustic factor (`caustics.py`).
         "bump_uv": group_node(bump_uv.NAME, 12, "scrolled bump UV (foam, caustics)"),
-        "caustics": group_node(caustics.NAME, 24, "caustic factor"),
+        "caustics": replace(group_node(caustics.NAME, 24, "caustic factor"), part="caustics"),
         "lit_bed": vmath("SCALE", 25, "T x caustics"),
         "seen": vmath("SCALE", 28, "F T x caustics"),
         "refraction": Node(

@@ -11,6 +11,8 @@ drivers (the Sky node), so a changed colour shows without running anything. The 
 surroundings' foam and caustics) are drivers too, as the lake's.
 """
 
+import itertools
+
 import bpy
 
 from . import SPECS, ocean, sea_fade
@@ -25,6 +27,7 @@ from .material import (
     new_node_material,
     trace_refraction,
 )
+from .ownership import VERSION_KEY, is_original, mark, role_of
 
 OCEAN_NODE = "Water Ocean"
 NORMAL_NODE = "Water Ocean Normal"
@@ -79,9 +82,43 @@ def _sky_node(tree, world):
     return node, None
 
 
+# Shade groups saved before the caustics were an optional part (version 5 and older) have them
+# built in.
+CAUSTICS_OPTIONAL_SINCE = 6
+
+
+def _variant_of(role):
+    """The parts of the shade variant named `role`, or None for no variant of ours."""
+    names = [part.name for part in ocean.FULL_SHADE_SPEC.parts]
+    for size in range(len(names) + 1):
+        for parts in itertools.combinations(names, size):
+            if ocean.FULL_SHADE_SPEC.variant(parts).name == role:
+                return set(parts)
+    return None
+
+
+def retire_legacy_shades():
+    """Gives the `Water Ocean Shade` groups of files saved before the caustics were optional
+    (built with them: a node keyed "caustics") the role and name of the variant with the
+    caustics, so their materials render as they did and the lean variant takes their old name
+    (the builder upgrades them in place when that variant is asked for)."""
+    for tree in bpy.data.node_groups:
+        version = tree.get(VERSION_KEY)
+        if not isinstance(version, int) or version >= CAUSTICS_OPTIONAL_SINCE or not is_original(tree):
+            continue
+        parts = _variant_of(role_of(tree))
+        if parts is None or "caustics" in parts or "caustics" not in tree.nodes:
+            continue
+        role = ocean.FULL_SHADE_SPEC.variant(parts | {"caustics"}).name
+        tree.name = role
+        mark(tree, role, version)
+
+
 def make_ocean_material(name="Ocean", scene=None):
-    """A new ocean material for a mesh with the `Water Waves` modifier (or any flat mesh)."""
+    """A new ocean material for a mesh with the `Water Waves` modifier (or any flat mesh), no
+    caustics built in (`set_values` fits the shade's parts to its values)."""
     scene = scene or bpy.context.scene
+    retire_legacy_shades()
     normal_group = ensure_group(SPECS[ocean.NORMAL_NAME], SPECS, image=ensure_bump_image())
     # A world with an image is looked up as the seeds look their sky cube up; any other world
     # (Sky Texture, a gradient) is reflected by the renderer (the traced sky); a plain colour is exact.
@@ -128,9 +165,10 @@ def ocean_nodes(material):
 
 def fit_shade_parts(material):
     """`fit_node_parts` for an ocean material's shade: the traced sky built in while its
-    `Traced Sky` is above 0."""
+    `Traced Sky` is above 0, the caustics while `Caustics` is."""
     nodes = ocean_nodes(material)
     if nodes is None:
         return False
+    retire_legacy_shades()
     spec = ocean.FULL_SHADE_SPEC
     return fit_node_parts(material, nodes[1], spec, lambda parts: ensure_group(spec.variant(parts), SPECS))

@@ -54,7 +54,13 @@ def shore(addon, eevee):
     scene.collection.objects.link(sun)
     bed = _bed(scene)
     added = harness.addon("api").add_water(
-        scene, preset="open_sea", resolution=129, sea_wind_speed=5.0, wind_direction=WIND, name="Sea"
+        scene,
+        preset="open_sea",
+        resolution=129,
+        sea_wind_speed=5.0,
+        wind_direction=WIND,
+        caustics=1.0,  # off by default on the open sea (its bed is 200 m down)
+        name="Sea",
     )
     camera = harness.add_camera(scene, (0.0, -8.0, 40.0), (0.0, 0.0, 0.0), lens=35.0)
     return {"scene": scene, "sea": added.object, "bed": bed, "camera": camera, "values": added.values}
@@ -155,6 +161,20 @@ def renders(shore, tmp_path_factory):
             grab(name)
         finally:
             api.write_values(sea, {key: before})
+    # The caustics built in but at 0 (a group saved before they were optional), against
+    # "no_caustics" (the lean group `write_values` switched to).
+    shade = harness.addon("nodes.ocean_material").ocean_nodes(sea.active_material)[1]
+    ocean, nodes = harness.addon("nodes.ocean"), harness.addon("nodes")
+    built_in = harness.addon("nodes.builder").ensure_group(
+        ocean.FULL_SHADE_SPEC.variant({"caustics"}), nodes.SPECS
+    )
+    assert shade.node_tree == built_in, "caustics on: the variant with them"
+    before = shade.inputs["Caustics"].default_value
+    shade.inputs["Caustics"].default_value = 0.0
+    try:
+        grab("built_in_at_zero")
+    finally:
+        shade.inputs["Caustics"].default_value = before
     # Close up over 2 m of water (a 200 mm lens: 7 m across), where the caustics' lines are
     # wider than a pixel.
     camera = shore["camera"]
@@ -237,6 +257,15 @@ def test_caustics_move_light_on_the_shallow_bed_without_adding_any(shore, render
         f"6-8 m {spread['deep']:.4f}"
     )
     assert spread["deep"] < spread["shallow"]
+
+
+@pytest.mark.render
+def test_caustics_at_zero_render_as_the_shade_without_them(shore, renders):
+    """Issue 24 point 6: the caustics are left out of the shade while off (they cost a quarter of
+    the open sea's render); built in at 0 they gave the same picture."""
+    difference = float(np.abs(renders["built_in_at_zero"] - renders["no_caustics"]).max())
+    print(f"caustics built in at 0 against left out: largest difference {difference:.5f}")
+    assert difference < 2e-3
 
 
 @pytest.mark.render

@@ -78,7 +78,11 @@ def sunny_sea(bpy, sun_rotation, wind_speed, before_sea=None):
     if before_sea is not None:
         before_sea()  # the sea gathers the objects that reach below it when it is added
     added = harness.addon("api").add_water(
-        scene, preset="open_sea", sea_wind_speed=wind_speed, wind_direction=(0.8, 0.6)
+        scene,
+        preset="open_sea",
+        sea_wind_speed=wind_speed,
+        wind_direction=(0.8, 0.6),
+        caustics=1.0 if before_sea is not None else 0.0,  # on the shallows round an island
     )
     print(added.summary("open_sea"), flush=True)
     return scene, added.object

@@ -6,6 +6,7 @@ the node is the one source of truth, so what the `.blend` holds is what shows.
 
 import bpy
 
+from ..nodes import ocean
 from ..nodes.material import bump_image, glint_sun, parts_built, water_node
 from ..nodes.ocean_material import ocean_nodes
 from ..nodes.water_surface import DEBUG_VIEWS
@@ -175,10 +176,11 @@ class VIEW3D_PT_water_surface(bpy.types.Panel):
         )
         box.operator("object.water_mirror_setup", icon="MOD_MIRROR")
 
-    def draw_part(self, box, node, name):
-        """A part's switch, and its inputs while it is in the shader (out, it costs nothing)."""
+    def draw_part(self, box, node, name, spec=None):
+        """A part's switch, and its inputs while it is in the shader (out, it costs nothing);
+        `spec`: the shading's description with every part (default: the lake's)."""
         label, inputs = _PART_LABELS[name], _PARTS[name]
-        on = name in parts_built(node.node_tree)
+        on = name in (parts_built(node.node_tree, spec) if spec else parts_built(node.node_tree))
         op = box.operator(
             "object.water_part_switch",
             text=f"{label}: {'On' if on else 'Off'}",
@@ -216,8 +218,10 @@ class VIEW3D_PT_water_surface(bpy.types.Panel):
         box.label(text="Surroundings", icon="OUTLINER_COLLECTION")
         box.use_property_split = True
         for name in _OCEAN_SURROUNDINGS:
-            if name in shade.inputs:
+            if name in shade.inputs and name not in _PARTS["caustics"]:
                 box.prop(shade.inputs[name], "default_value", text=name)
+        if "Caustics" in shade.inputs:  # a part: in the shader only while on
+            self.draw_part(box, shade, "caustics", ocean.FULL_SHADE_SPEC)
         self.draw_surroundings(box, obj)
 
     def draw_sea(self, layout, obj, material):

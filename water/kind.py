@@ -18,15 +18,19 @@ OPEN_SEA = "open_sea"
 
 # What each kind of water allows. The mirror set-up's probe and light linking, the sun and
 # bump choices, lake presets and Cycles' physical caustics are the lake shading's; every kind
-# has ray tracing, surroundings, the shader's caustics, floating objects and repair.
+# has ray tracing, surroundings, the shader's caustics (a part switched in and out of the
+# shader: the lake's depth colour and foam too), floating objects and repair.
 FEATURES = {
     LAKE: frozenset(
         {"mirror", "ray_tracing", "waves", "surroundings", "caustics", "physical_caustics"}
         | {"floating", "repair", "presets", "sun_choice", "bump_choice", "shader_parts"}
     ),
-    OCEAN: frozenset({"ray_tracing", "waves", "surroundings", "caustics", "floating", "repair"}),
+    OCEAN: frozenset(
+        {"ray_tracing", "waves", "surroundings", "caustics", "floating", "repair", "shader_parts"}
+    ),
     OPEN_SEA: frozenset(
         {"ray_tracing", "surroundings", "caustics", "floating", "repair", "whitecaps", "swell"}
+        | {"shader_parts"}
     ),
 }
 
@@ -36,7 +40,6 @@ _WHY = {
     "presets": "presets hold lake water values (edit it in the panel)",
     "physical_caustics": "physical caustics are set up for lake water",
     "sun_choice": "this choice is for lake water",
-    "shader_parts": "its depth colour, foam and caustics are always in its shading",
     "bump_choice": "this choice is for lake water",
     "waves": "its waves are Blender's Ocean modifier (set them in the panel)",
     "whitecaps": "whitecaps are the open sea's",

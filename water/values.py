@@ -3,14 +3,18 @@ ocean's `Water Ocean Shade`): one source of truth that the panel shows, presets 
 `.blend` keeps."""
 
 from ..nodes.material import fit_parts, parts_built, parts_wanted, water_node
-from ..nodes.ocean_material import ocean_nodes
-from ..nodes.water_surface import PARTS
+from ..nodes.ocean import FULL_SHADE_SPEC
+from ..nodes.ocean_material import fit_shade_parts, ocean_nodes
+from ..nodes.water_surface import FULL_SPEC, PARTS
 from ..presets import schema
 from .kind import LAKE, OCEAN, shading_of, water_material
 
 __all__ = ("is_water", "read_values", "switch_part", "water_material", "write_values")
 
 PART_NAMES = tuple(part.name for part in PARTS)
+# The ocean shading's parts a user switches (its traced sky follows the world by itself).
+OCEAN_PARTS = tuple(part for part in FULL_SHADE_SPEC.parts if part.name == "caustics")
+OCEAN_PART_NAMES = tuple(part.name for part in OCEAN_PARTS)
 
 
 def is_water(obj):
@@ -102,21 +106,31 @@ def set_values(material, values):
         written.append(key)
     if shading_of(material) == LAKE:
         fit_parts(material)  # the parts the values turn on built in, those at 0 taken out
+    else:
+        fit_shade_parts(material)  # the ocean's caustics likewise
     return written
 
 
 def switch_part(material, name, on):
-    """Turns an optional part of the lake shading (`PART_NAMES`: depth colour, foam, caustics) on
-    or off: its switch (Absorption, Foam Amount, Caustics) goes to the part's usual value when
-    it was 0, or to 0, and the group becomes the variant with the parts now on (`fit_parts`).
-    Returns what it did, in words; ValueError for an unknown part or a water without lake shading.
+    """Turns an optional part of the shading on or off: on the lake (`PART_NAMES`) depth colour,
+    foam or caustics, on the ocean shading (`OCEAN_PART_NAMES`) its caustics. Its switch
+    (Absorption, Foam Amount, Caustics) goes to the part's usual value when it was 0, or to 0,
+    and the group becomes the variant with the parts now on (`fit_parts`, `fit_shade_parts`).
+    Returns what it did, in words; ValueError for a part the water's shading does not switch.
     """
-    part = next((p for p in PARTS if p.name == name), None)
+    shading = shading_of(material)
+    parts, names, spec = (
+        (PARTS, PART_NAMES, FULL_SPEC)
+        if shading == LAKE
+        else (OCEAN_PARTS, OCEAN_PART_NAMES, FULL_SHADE_SPEC)
+    )
+    part = next((p for p in parts if p.name == name), None)
     if part is None:
-        raise ValueError(f"no part '{name}': choose from {', '.join(PART_NAMES)}")
-    node = water_node(material) if shading_of(material) == LAKE else None
+        kind = "the ocean shading" if shading == OCEAN else "the lake"
+        raise ValueError(f"no part '{name}' to switch on {kind}: choose from {', '.join(names)}")
+    node = _shader_node(material)
     if node is None or node.inputs.get(part.switch) is None:
-        raise ValueError(f"'{getattr(material, 'name', material)}' has no lake shading with {part.switch}")
+        raise ValueError(f"'{getattr(material, 'name', material)}' has no water shading with {part.switch}")
     socket = node.inputs[part.switch]
     value = socket.default_value
     colour = hasattr(value, "__len__")
@@ -125,8 +139,11 @@ def switch_part(material, name, on):
         socket.default_value = (*part.on_value, 1.0) if colour else part.on_value
     elif not on:
         socket.default_value = (0.0, 0.0, 0.0, 1.0) if colour else 0.0
-    fit_parts(material)
-    built = name in parts_built(node.node_tree)
-    if built and not on and name in parts_wanted(material, node):
+    if shading == LAKE:
+        fit_parts(material)
+    else:
+        fit_shade_parts(material)
+    built = name in parts_built(node.node_tree, spec)
+    if built and not on and name in parts_wanted(material, node, spec):
         return [f"{part.label} stays in the shader: {part.switch} is linked, animated or driven"]
     return [f"{part.label} {'on' if built else 'off'} ({node.node_tree.name})"]
