@@ -176,13 +176,21 @@ def float_on_water(
     water: bpy.types.Object | None = None,
     tilt_damping: float = 0.0,
     scene: bpy.types.Scene | None = None,
+    draft: float | None = None,
+    length: float | None = None,
+    beam: float | None = None,
 ) -> list[str]:
-    """Makes `obj` ride `water` (default: the water below or above its origin) with constraints:
-    its origin on the evaluated surface, its up axis along the normal, less by `tilt_damping`
-    (0..1). FloatError when there is no water; returns the changes in words."""
+    """Makes `obj` ride `water` (default: the water below or above its origin) by its footprint,
+    with constraints and drivers (no Python at render): its heave from the water's mean height
+    under it, `draft` metres of it below the waterline (None: a third of its height), its pitch
+    and roll from the plane fitted to the surface over `length` x `beam` metres (None: its
+    bounds'), less by `tilt_damping` (0..1). Floating it again takes new values and where it is
+    now. FloatError when there is no water or a size is out of range; returns the changes in
+    words."""
+    scene = scene or bpy.context.scene
     if water is None:
-        water = _floating.water_below(obj, scene or bpy.context.scene)
-    return _floating.float_on_water(obj, water, tilt_damping)
+        water = _floating.water_below(obj, scene)
+    return _floating.float_on_water(obj, water, tilt_damping, draft, length, beam, scene)
 
 
 def stop_floating(obj: bpy.types.Object) -> list[str]:

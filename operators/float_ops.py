@@ -14,13 +14,45 @@ def _floaters(context):
 
 
 class OBJECT_OT_water_float(bpy.types.Operator):
-    """Make the selected objects float on the water below them (or on the selected water): their
-    origin rides the surface and their up axis follows its tilt, with constraints (no scripts)"""
+    """Make the selected objects float on the water below them (or on the selected water): each
+    rides the water under its whole footprint (heave, pitch and roll), at its draft, with
+    constraints and drivers (no scripts at render)"""
 
     bl_idname = "object.water_float"
     bl_label = "Float on Water"
     bl_options = {"REGISTER", "UNDO"}
 
+    draft: bpy.props.FloatProperty(
+        name="Draft",
+        description="How deep the object sits: metres of it below the waterline, from its lowest "
+        "point (0 with Draft from Bounds: a third of its height)",
+        default=0.0,
+        min=0.0,
+        soft_max=20.0,
+        unit="LENGTH",
+    )
+    draft_from_bounds: bpy.props.BoolProperty(
+        name="Draft from Bounds",
+        description="Sink the object by a third of its height (its bounding box's)",
+        default=True,
+    )
+    length: bpy.props.FloatProperty(
+        name="Length",
+        description="Length of the footprint whose water rocks the object, along its longer "
+        "horizontal axis (0: its bounding box's)",
+        default=0.0,
+        min=0.0,
+        soft_max=500.0,
+        unit="LENGTH",
+    )
+    beam: bpy.props.FloatProperty(
+        name="Beam",
+        description="Width of the footprint whose water rocks the object (0: its bounding box's)",
+        default=0.0,
+        min=0.0,
+        soft_max=100.0,
+        unit="LENGTH",
+    )
     tilt_damping: bpy.props.FloatProperty(
         name="Tilt Damping",
         description="How much less than the water the objects tilt (0: they follow the surface, "
@@ -52,7 +84,15 @@ class OBJECT_OT_water_float(bpy.types.Operator):
         for obj in _floaters(context):
             water = chosen[0] if chosen else floating.water_below(obj, context.scene, depsgraph)
             try:
-                done += floating.float_on_water(obj, water, self.tilt_damping)
+                done += floating.float_on_water(
+                    obj,
+                    water,
+                    self.tilt_damping,
+                    None if self.draft_from_bounds else self.draft,
+                    self.length or None,
+                    self.beam or None,
+                    context.scene,
+                )
             except (floating.FloatError, NotEditableError) as error:
                 skipped.append(str(error))
         for message in skipped:

@@ -255,9 +255,26 @@ class VIEW3D_PT_water_surface(bpy.types.Panel):
         row = box.row(align=True)
         row.operator("object.water_float", icon="CON_SHRINKWRAP")
         row.operator("object.water_float_stop", text="Stop", icon="X")
-        water = floating.floating_on(context.active_object) if context.active_object else None
-        if water is not None:
-            box.label(text=f"Floats on '{water.name}'")
+        obj = context.active_object
+        water = floating.floating_on(obj) if obj else None
+        if water is None:
+            return
+        settings = floating.footprint_settings(obj)
+        if settings:
+            box.label(
+                text=f"Floats on '{water.name}': draft {settings['draft']:.2g} m, "
+                f"{settings['length']:.3g} x {settings['beam']:.3g} m"
+            )
+        else:
+            box.label(text=f"Floats on '{water.name}' by its origin (float again: by its footprint)")
+        stale = floating.rig_out_of_date(obj)
+        if stale is not None:
+            box.label(text=stale, icon="ERROR")
+            again = box.operator("object.water_float", text="Float Again", icon="FILE_REFRESH")
+            if again is not None and settings:  # as it floats now, from where it is now
+                again.draft_from_bounds = False
+                again.draft, again.length, again.beam = (settings[k] for k in ("draft", "length", "beam"))
+                again.tilt_damping = floating.tilt_damping_of(obj)
 
     def draw_waves(self, layout, obj):
         """The wave modifier's inputs, wave by wave, or a button to add it."""

@@ -1,5 +1,9 @@
 """Which constraints make an object float, told by the add-on's record on the object, not by name.
 
+Now an object floats by its footprint (`float_rig.py`): "float" is a Copy Location
+and "tilt" a Copy Rotation aiming at the rig's pose; before, both were Shrinkwrap constraints
+aiming at the water, and files saved then still float that way until floated again.
+
 Blender's constraints hold no ID properties, so the object keeps the names of the two
 constraints the add-on made for it (`RECORD_KEY`, a small dict); a constraint of the
 user's that happens to be named "Water Float" is theirs and never touched. Objects
@@ -8,6 +12,9 @@ Shrinkwrap, named as the add-on named them and aiming at the same water.
 """
 
 from .values import is_water
+
+RIG_KEY = "water_surface_float_rig"  # on a rig's empties (float_rig.py): "pose" or "probe"
+_KINDS = {"float": ("SHRINKWRAP", "COPY_LOCATION"), "tilt": ("SHRINKWRAP", "COPY_ROTATION")}
 
 FLOAT = "Water Float"
 TILT = "Water Float Tilt"
@@ -48,10 +55,38 @@ def forget(obj):
 
 
 def constraint(obj, role):
-    """The add-on's Shrinkwrap constraint `role` on `obj`, or None."""
+    """The add-on's constraint `role` on `obj`, or None."""
     name = record(obj).get(role)
     found = obj.constraints.get(name) if name else None
-    return found if found is not None and found.type == "SHRINKWRAP" else None
+    return found if found is not None and found.type in _KINDS[role] else None
+
+
+def pose_of(obj):
+    """The footprint rig's pose `obj` follows, or None (not floating, or floating the old way)."""
+    for found in float_constraints(obj):
+        target = found.target
+        if target is not None and target.get(RIG_KEY) == "pose":
+            return target
+    return None
+
+
+def water_of(target):
+    """The water a constraint's target stands for: a water itself, or the water a rig's pose's
+    probes are dropped onto."""
+    if target is None:
+        return None
+    if target.get(RIG_KEY) != "pose":
+        return target if is_water(target) else None
+    animation = target.animation_data
+    for curve in animation.drivers if animation else ():
+        for variable in curve.driver.variables:
+            probe = variable.targets[0].id
+            if probe is None or probe.get(RIG_KEY) != "probe":
+                continue
+            for found in probe.constraints:
+                if found.type == "SHRINKWRAP" and found.target is not None and is_water(found.target):
+                    return found.target
+    return None
 
 
 def float_constraints(obj):
@@ -63,5 +98,6 @@ def floating_on(obj):
     """The water `obj` floats on, or None."""
     if obj is None:
         return None
-    found = [c.target for c in float_constraints(obj) if c.target is not None]
+    found = [water_of(c.target) for c in float_constraints(obj)]
+    found = [water for water in found if water is not None]
     return found[0] if found else None

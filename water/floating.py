@@ -1,24 +1,36 @@
-"""Objects that float: they ride the water below them, with Blender's own Shrinkwrap constraint.
+"""Objects that float: they ride the water under their whole footprint, with Blender's own parts.
 
-Two constraints, no Python at render. First `Water Float Tilt` projects the object's origin
-straight down (or up) onto the water's evaluated surface and turns its up axis (+Z) to the
-surface normal there, at an influence of 1 - `tilt_damping`, so a damped object tilts less than
-the water; then `Water Float` projects the origin again along Z, at full influence, so it sits
-on the surface whatever the damping (a projection along Z keeps x and y). Both name the water as their
-target, so the object follows whichever waves the water has: the lake's flat surface, the seeds'
-four sines (`Water Waves`) or the open sea's Ocean modifier.
+`float_on_water` gives the object a rig (`float_rig.py`): probes over its footprint dropped onto
+the water's evaluated surface by Shrinkwrap constraints, and a pose that drivers with simple
+expressions set from the probes' heights: the plane fitted to them gives the heave (less the
+draft) and the pitch and roll. The object copies the pose's height and, at 1 - `tilt_damping`,
+its tilt. Waves much longer than the hull rock it as the surface does; ripples much shorter than
+it cancel out over it. The probes name the water as their target, so the object follows
+whichever waves the water has: the lake's flat surface, the seeds' four sines (`Water Waves`)
+or the open sea's Ocean modifier. No Python runs at render.
 """
 
 import bpy
 from mathutils import Vector
 
-from . import physical_caustics, surroundings
+from . import float_rig, physical_caustics, surroundings
 from .editable import check_editable
-from .float_constraints import FLOAT, TILT, float_constraints, floating_on, forget, remember
+from .float_constraints import FLOAT, TILT, float_constraints, floating_on, forget, pose_of, remember
 from .float_constraints import constraint as constraint_for
 from .values import is_water
 
-__all__ = ("FloatError", "float_on_water", "floating_on", "is_floating", "stop_floating", "water_below")
+__all__ = (
+    "FloatError",
+    "float_on_water",
+    "floating_on",
+    "footprint_settings",
+    "is_floating",
+    "release",
+    "rig_out_of_date",
+    "stop_floating",
+    "tilt_damping_of",
+    "water_below",
+)
 
 
 class FloatError(RuntimeError):
@@ -50,57 +62,114 @@ def water_below(obj, scene, depsgraph=None):
     return best[1] if best else None
 
 
-def _shrinkwrap(obj, role, name, water):
-    """The add-on's constraint `role` on `obj` (reused, or made and recorded) aimed at `water`."""
-    constraint = constraint_for(obj, role)
-    if constraint is None:
-        constraint = obj.constraints.new("SHRINKWRAP")
-        constraint.name = name  # Blender adds ".001" when the user has one of that name
-        remember(obj, role, constraint)
-    constraint.target = water
-    constraint.shrinkwrap_type = "PROJECT"
-    constraint.project_axis = "NEG_Z"
-    constraint.project_axis_space = "WORLD"
-    constraint.use_project_opposite = True  # an object below the surface comes up
-    constraint.cull_face = "OFF"
-    constraint.project_limit = 0.0  # any distance
-    constraint.distance = 0.0
-    return constraint
+def _constraint(obj, role, name, kind):
+    """The add-on's constraint `role` on `obj`: reused when of `kind`, else made and recorded
+    (an old Shrinkwrap of the add-on's is replaced)."""
+    found = constraint_for(obj, role)
+    if found is not None and found.type != kind:
+        obj.constraints.remove(found)
+        found = None
+    if found is None:
+        found = obj.constraints.new(kind)
+        found.name = name  # Blender adds ".001" when the user has one of that name
+        remember(obj, role, found)
+    return found
 
 
-def float_on_water(obj, water, tilt_damping=0.0):
-    """Makes `obj` ride `water`: its origin on the surface below, its up axis along the surface's
-    normal damped by `tilt_damping` (0 = follows fully, 1 = stays upright). Returns the changes."""
+def footprint_settings(obj):
+    """{"draft", "length", "beam"} the object floats with ({} when it does not, or the old way)."""
+    held = obj.get(float_rig.SETTINGS_KEY)
+    try:
+        return {key: float(held[key]) for key in ("draft", "length", "beam")} if held else {}
+    except (TypeError, KeyError, ValueError):
+        return {}
+
+
+def _check_sizes(draft, length, beam):
+    for name, value in (("draft", draft), ("length", length), ("beam", beam)):
+        if value is not None and not (float(value) >= 0.0 and float(value) < 1e5):
+            raise FloatError(f"The {name} must be 0 m or more (got {value})")
+        if name != "draft" and value is not None and float(value) == 0.0:
+            raise FloatError(f"The footprint's {name} must be above 0 m (leave it out to take the bounds')")
+
+
+def float_on_water(obj, water, tilt_damping=0.0, draft=None, length=None, beam=None, scene=None):
+    """Makes `obj` ride `water` by its footprint: its heave from the water's mean height under it,
+    `draft` metres of it below the waterline (None: a third of its height), its pitch and roll from
+    the plane fitted over `length` x `beam` (None: its bounds'), damped by `tilt_damping` (0 =
+    follows fully, 1 = stays upright). Returns the changes in words."""
     check_editable(obj)
     if water is None or not is_water(water):
         raise FloatError(f"'{obj.name}' has no water below it to float on")
     if water == obj:
         raise FloatError(f"'{obj.name}' is the water itself")
+    _check_sizes(draft, length, beam)
     damping = min(max(float(tilt_damping), 0.0), 1.0)
     try:  # what floats on a water is never in its surroundings: the two would make a cycle
         changes = surroundings.leave_out(water, obj)
     except surroundings.SurroundingsError as error:
         raise FloatError(str(error)) from error
     changes += physical_caustics.let_go_of_receiver(water, obj)  # out of the surroundings: no receiver
-    tilt = _shrinkwrap(obj, "tilt", TILT, water)
-    tilt.use_track_normal = True
-    tilt.track_axis = "TRACK_Z"
+    old = pose_of(obj)
+    if old is not None and float_rig.owned_by(old, obj):  # a copy's rig is the original's: kept
+        float_rig.remove(old)
+    ours = float_constraints(obj)
+    own = [c for c in obj.constraints if c not in ours]
+    pose, settings = float_rig.build(obj, water, scene or bpy.context.scene, own, draft, length, beam)
+    obj[float_rig.SETTINGS_KEY] = settings
+    tilt = _constraint(obj, "tilt", TILT, "COPY_ROTATION")
+    tilt.target = pose
+    tilt.mix_mode = "AFTER"
+    # After its own rotation: the pose's tilt about the object's own axes (in world space:
+    # Blender's local space leaves an object's Copy Rotation without effect).
+    tilt.target_space = tilt.owner_space = "WORLD"
     tilt.influence = 1.0 - damping
-    last = _shrinkwrap(obj, "float", FLOAT, water)
-    last.use_track_normal = False
-    # The tilt before the last projection, whatever order they were in.
+    last = _constraint(obj, "float", FLOAT, "COPY_LOCATION")
+    last.target = pose
+    last.use_x = last.use_y = False
+    last.use_z = True
+    last.use_offset = False
+    last.target_space = last.owner_space = "WORLD"
+    last.influence = 1.0
+    # The tilt before the height, whatever order they were in.
     order = [c.name for c in obj.constraints]
     if order.index(tilt.name) > order.index(last.name):
         obj.constraints.move(order.index(tilt.name), order.index(last.name))
-    return [f"'{obj.name}' floats on '{water.name}' (tilt damping {damping:g})"] + changes
+    return [
+        f"'{obj.name}' floats on '{water.name}' (draft {settings['draft']:.3g} m, footprint "
+        f"{settings['length']:.3g} x {settings['beam']:.3g} m, tilt damping {damping:g})"
+    ] + changes
+
+
+def tilt_damping_of(obj):
+    """The tilt damping `obj` floats with (0 when it does not float)."""
+    tilt = constraint_for(obj, "tilt")
+    return 1.0 - tilt.influence if tilt is not None else 0.0
+
+
+def rig_out_of_date(obj):
+    """Why `obj`'s floating rig no longer moves as it does (float it again), or None."""
+    pose = pose_of(obj)
+    return float_rig.out_of_date(obj, pose) if pose is not None else None
+
+
+def release(obj):
+    """Takes the add-on's floating constraints and rig off `obj` (no checks); returns the changes."""
+    found = float_constraints(obj)
+    pose = pose_of(obj)
+    for constraint in found:
+        obj.constraints.remove(constraint)
+    if pose is not None and float_rig.owned_by(pose, obj):
+        float_rig.remove(pose)
+    float_rig.let_go_of_action(obj)
+    forget(obj)
+    if float_rig.SETTINGS_KEY in obj:
+        del obj[float_rig.SETTINGS_KEY]
+    return [f"'{obj.name}' no longer floats"] if found else []
 
 
 def stop_floating(obj):
-    """Removes the floating constraints the add-on made (by its record on the object, never a
-    user's constraint of the same name); the object goes back to where it was before."""
+    """Removes the floating constraints and rig the add-on made (by its record on the object,
+    never a user's constraint of the same name); the object goes back to where it was before."""
     check_editable(obj)
-    found = float_constraints(obj)
-    for constraint in found:
-        obj.constraints.remove(constraint)
-    forget(obj)
-    return [f"'{obj.name}' no longer floats"] if found else []
+    return release(obj)

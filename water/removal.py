@@ -16,9 +16,9 @@ file holds none of it: the scene settings their set-up changed go back by the sa
 import bpy
 
 from ..nodes.ownership import is_original, role_of
-from . import kind, ledger, mirror, physical_caustics, sun_link, surroundings
+from . import float_rig, floating, kind, ledger, mirror, physical_caustics, sun_link, surroundings
 from .editable import check_editable
-from .float_constraints import float_constraints, floating_on, forget
+from .float_constraints import float_constraints, floating_on
 from .values import water_material
 
 # The add-on's data kinds removed once nothing uses them (their marks say whose they are).
@@ -32,15 +32,14 @@ class RemoveWaterError(ValueError):
 def _let_floaters_go(water):
     """Removes the floating constraints of the objects floating on `water` (None: on no object any
     more, their water deleted)."""
+    floaters = [
+        obj
+        for obj in bpy.data.objects
+        if obj != water and obj.library is None and float_constraints(obj) and floating_on(obj) == water
+    ]
     changes = []
-    for obj in bpy.data.objects:
-        if obj == water or obj.library is not None or not float_constraints(obj):
-            continue
-        if floating_on(obj) == water:
-            for constraint in float_constraints(obj):
-                obj.constraints.remove(constraint)
-            forget(obj)
-            changes.append(f"'{obj.name}' no longer floats")
+    for obj in floaters:  # releasing removes their rigs' objects: not while going through them
+        changes += floating.release(obj)
     return changes
 
 
@@ -162,6 +161,7 @@ def remove_leftovers():
         changes += parts + _remove_object(water, material)
     changes += _remove_lost_caches()
     changes += _let_floaters_go(None)  # those whose water is gone altogether
+    changes += float_rig.remove_lost_rigs()  # those whose floating object is gone
     for probe in [o for o in bpy.data.objects if mirror.is_lost_probe(o)]:
         changes.append(_delete_probe(probe, " (its water was deleted)"))
     removed = _remove_unused_own_data() if changes else []  # only what those leftovers kept alive

@@ -13,7 +13,15 @@ from conftest import ROOT, load
 
 
 def test_these_modules_import_without_blender():
-    for name in ("presets", "presets.schema", "presets.store", "water.sea_math", "nodes.wave_math"):
+    for name in (
+        "presets",
+        "presets.schema",
+        "presets.store",
+        "water.sea_math",
+        "nodes.wave_math",
+        "water.footprint_math",
+        "water.whitecap_math",
+    ):
         load(name)
     load("nodes")  # the group descriptions are data
     assert "bpy" not in sys.modules
