@@ -9,16 +9,20 @@ Three waters with the same number of vertices (385 x 385), one in the scene at a
 * the seeds' `ocean`: the four sines (`Water Waves`) and the ocean shading on an even grid one
   tile wide.
 
-Per-frame evaluation: milliseconds to evaluate the object over 24 frames (the best of 5
-interleaved rounds). Steady render: EEVEE, 256 x 144, 8 samples, the best of 3 interleaved
-rounds after a first render. Ratios are to the Ocean modifier alone. Run with
+Per-frame evaluation: milliseconds to evaluate the object over 24 frames, in 15 interleaved
+rounds. Steady render: EEVEE, 256 x 144, 8 samples, in 5 interleaved rounds after a first
+render. Ratios are to the Ocean modifier alone, taken round by round (the two measured back to
+back) and their median given with their range: on a shared machine a whole round runs slower
+or faster by 10 to 20%, which a ratio of bests mixed into the figure. Run with
 `tools/bench open_sea_cost`; `--breakdown` adds where the sea's render goes: the same sea under
 the Principled water (its mesh's cost), with its caustics built in (`Caustics` 1, what the
 preset had before they became a part), and the Ocean modifier alone casting no shadow (the
-sea's water casts none, as the add-on sets it).
+sea's water casts none, as the add-on sets it); `--modifiers` prints each of the sea's
+modifiers' own time (`Modifier.execution_time`, 72 frames: the best and the median).
 """
 
 import math
+import statistics
 import sys
 import tempfile
 import time
@@ -27,8 +31,8 @@ import harness
 
 POINTS = 385
 FRAMES = 24
-EVAL_ROUNDS = 5
-RENDER_ROUNDS = 3
+EVAL_ROUNDS = 15
+RENDER_ROUNDS = 5
 
 
 def principled_water(bpy):
@@ -81,6 +85,25 @@ def breakdown(bpy, scene, api, sea, alone):
     }
 
 
+def modifier_times(bpy, scene, sea, show):
+    """Prints each of the sea's modifiers' own evaluation time over 72 frames."""
+    show(sea)
+    times = {}
+    for frame in range(1, 73):
+        scene.frame_set(frame)
+        evaluated = sea.evaluated_get(bpy.context.evaluated_depsgraph_get())
+        for modifier in evaluated.modifiers:
+            times.setdefault(modifier.name, []).append(modifier.execution_time * 1000.0)
+    for name, found in times.items():
+        print(f"{name}: best {min(found):.2f} ms, median {statistics.median(found):.2f} ms a frame")
+
+
+def ratios(values, bases):
+    """'median (low-high)' of the round-by-round ratios of `values` to `bases`."""
+    found = sorted(v / b for v, b in zip(values, bases))
+    return f"{statistics.median(found):.2f} ({found[0]:.2f}-{found[-1]:.2f})"
+
+
 def evaluation_ms(bpy, scene, obj):
     """Milliseconds a frame to evaluate `obj` (its mesh read back) over FRAMES frames."""
     start = time.perf_counter()
@@ -121,6 +144,8 @@ def main():
         for obj in waters.values():
             obj.hide_render = obj.hide_viewport = obj is not chosen
 
+    if "--modifiers" in sys.argv:
+        modifier_times(bpy, scene, sea, show)
     evaluation = {name: [] for name in waters}
     for _round in range(EVAL_ROUNDS):
         for name, obj in waters.items():
@@ -142,20 +167,21 @@ def main():
             harness.render(scene, f"{out}/steady.png")
             steady[name].append(time.perf_counter() - start)
     base = "Ocean modifier alone + Principled water"
-    base_eval, base_render = min(evaluation[base]), min(steady[base])
     print(
-        f"\nBlender {bpy.app.version_string}; {FRAMES} frames, best of {EVAL_ROUNDS} rounds; "
-        f"renders 256 x 144, 8 samples, best of {RENDER_ROUNDS}"
+        f"\nBlender {bpy.app.version_string}; {FRAMES} frames, {EVAL_ROUNDS} rounds; renders 256 x 144, "
+        f"8 samples, {RENDER_ROUNDS} rounds; ratios: the median of the rounds' (their range)"
     )
     print(
-        "| water | vertices | ms/frame | / Ocean alone | first render s | steady render s | / Ocean alone |"
+        "| water | vertices | ms/frame (median) | / Ocean alone | first render s | steady render s "
+        "| / Ocean alone |"
     )
     print("| --- | --- | --- | --- | --- | --- | --- |")
     for name in waters:
-        ms, render_s = min(evaluation[name]), min(steady[name])
+        evaluated = ratios(evaluation[name], evaluation[base])
+        rendered = ratios(steady[name], steady[base])
         print(
-            f"| {name} | {counts[name]} | {ms:.1f} | {ms / base_eval:.2f} | {first[name]:.2f} | "
-            f"{render_s:.2f} | {render_s / base_render:.2f} |"
+            f"| {name} | {counts[name]} | {statistics.median(evaluation[name]):.1f} | {evaluated} | "
+            f"{first[name]:.2f} | {statistics.median(steady[name]):.2f} | {rendered} |"
         )
     return 0
 

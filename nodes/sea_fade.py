@@ -19,8 +19,11 @@ from .spec import GroupSpec, Node, Socket, math, vmath
 
 NAME = "Water Sea Fade"
 # 2: whitecaps from the crests' heights (were the Ocean modifier's own foam: blotches tens of
-# metres across, a share of the sea that hardly followed the wind)
-VERSION = 2
+# metres across, a share of the sea that hardly followed the wind); 3: the crests stored once
+# where the sea is not flat, and the trail reads them (it evaluated them again per step, over
+# every point: a third of the sea's evaluation beyond the Ocean modifier's)
+VERSION = 3
+CREST_ATTRIBUTE = "water_crest"  # the crests (0 to 1) before their trail, stored for it to read
 REST_ATTRIBUTE = "water_rest"
 OCEAN_FOAM_ATTRIBUTE = "water_ocean_foam"  # the Ocean modifier's foam layer (version 1 read it)
 WHITECAPS_ATTRIBUTE = "water_whitecaps"
@@ -136,7 +139,7 @@ def _trail():
         ("side_round:Value", "shift:#1"),
         ("cols_round:Value", "shift:#2"),
     ]
-    kept = "crest:Result"
+    kept = "crest_read:Attribute"
     for k in range(1, TRAIL_STEPS + 1):
         nodes[f"trail_index_{k}"] = math("MULTIPLY_ADD", column + 7, f"index + {k} shift", a=float(k))
         nodes[f"trail_mark_{k}"] = Node(
@@ -150,8 +153,8 @@ def _trail():
         links += [
             ("shift:Value", f"trail_index_{k}:#1"),
             ("index:Index", f"trail_index_{k}:#2"),
-            ("input:Geometry", f"trail_mark_{k}:Geometry"),
-            ("crest:Result", f"trail_mark_{k}:Value"),
+            ("crests:Geometry", f"trail_mark_{k}:Geometry"),
+            ("crest_read:Attribute", f"trail_mark_{k}:Value"),
             (f"trail_index_{k}:Value", f"trail_mark_{k}:Index"),
             (f"trail_mark_{k}:Value", f"trail_fade_{k}:#0"),
             (kept, f"trail_{k}:#0"),
@@ -254,6 +257,23 @@ SPEC = GroupSpec(
         "kept": vmath("SCALE", 4, "displacement kept"),
         "placed": vmath("ADD", 5, "rest + kept"),
         "whitecaps": math("MULTIPLY", 4, "foam faded"),
+        # The crests are computed once, and only where the sea is not flat (near > 0): the trail
+        # reads them back at other points; far out the whitecaps stay 0 (a new attribute's).
+        "waving": math("GREATER_THAN", 4, "not flat (near > 0)"),
+        "crests": Node(
+            "GeometryNodeStoreNamedAttribute",
+            5,
+            {"data_type": "FLOAT", "domain": "POINT"},
+            {"Name": CREST_ATTRIBUTE},
+            label=f"store the crests ('{CREST_ATTRIBUTE}')",
+        ),
+        "crest_read": Node(
+            "GeometryNodeInputNamedAttribute",
+            5,
+            {"data_type": "FLOAT"},
+            {"Name": CREST_ATTRIBUTE},
+            label="the crests, stored",
+        ),
         "move": Node("GeometryNodeSetPosition", 6),
         "store": Node(
             "GeometryNodeStoreNamedAttribute",
@@ -297,9 +317,14 @@ SPEC = GroupSpec(
         *_TRAIL_LINKS,
         (_TRAIL, "whitecaps:#0"),
         ("near:Result", "whitecaps:#1"),
-        ("input:Geometry", "move:Geometry"),
+        ("near:Result", "waving:#0"),
+        ("input:Geometry", "crests:Geometry"),
+        ("waving:Value", "crests:Selection"),
+        ("crest:Result", "crests:Value"),
+        ("crests:Geometry", "move:Geometry"),
         ("placed:Vector", "move:Position"),
         ("move:Geometry", "store:Geometry"),
+        ("waving:Value", "store:Selection"),
         ("whitecaps:Value", "store:Value"),
         ("store:Geometry", "output:Geometry"),
     ),
