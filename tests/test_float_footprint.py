@@ -298,3 +298,50 @@ def test_the_operator_takes_draft_and_footprint_and_the_panel_offers_float_again
     assert floating.footprint_settings(hull)["draft"] == pytest.approx(HULL[2] / 3.0)
     with pytest.raises(RuntimeError, match="footprint's beam must be above 0"):
         _api().float_on_water(hull, sea, beam=0.0)
+
+
+def test_it_follows_a_hull_carried_by_a_parent_or_a_follow_path(scene):
+    """A hull parented to a moving empty, and one led along a curve by a Follow Path constraint:
+    the rig's probes stay under each as it goes."""
+    sea = _sea(scene, period=8.0)
+    carrier = bpy.data.objects.new("Carrier", None)
+    scene.collection.objects.link(carrier)
+    carrier.location = (0.0, 0.0, 0.0)
+    carrier.keyframe_insert("location", frame=1)
+    carrier.location = (30.0, 20.0, 0.0)
+    carrier.keyframe_insert("location", frame=49)
+    carried = _hull(scene, location=(5.0, -4.0, 6.0))
+    carried.parent = carrier
+    curve = bpy.data.curves.new("Course", "CURVE")
+    curve.dimensions = "3D"
+    spline = curve.splines.new("POLY")
+    spline.points.add(1)
+    spline.points[0].co = (-40.0, -30.0, 6.0, 1.0)
+    spline.points[1].co = (-10.0, 10.0, 6.0, 1.0)
+    course = bpy.data.objects.new("Course", curve)
+    scene.collection.objects.link(course)
+    led = _hull(scene, location=(0.0, 0.0, 0.0))
+    path = led.constraints.new("FOLLOW_PATH")
+    path.target = course
+    path.use_fixed_location = True
+    path.offset_factor = 0.2
+    path.keyframe_insert("offset_factor", frame=1)
+    path.offset_factor = 0.8
+    path.keyframe_insert("offset_factor", frame=49)
+    for hull in (carried, led):
+        _api().float_on_water(hull, sea, draft=DRAFT)
+    rig = harness.addon("water.float_rig")
+    floating = harness.addon("water.floating")
+    for frame in (1, 25, 49):
+        scene.frame_set(frame)
+        depsgraph = bpy.context.evaluated_depsgraph_get()
+        for hull in (carried, led):
+            probes = rig.probes_of(floating.pose_of(hull))
+            centre = sum(
+                (p.evaluated_get(depsgraph).matrix_world.translation for p in probes), Vector()
+            ) / len(probes)
+            where = hull.evaluated_get(depsgraph).matrix_world.translation
+            print(
+                f"frame {frame}, {hull.name}: at {where.x:.2f}, {where.y:.2f}; probes {centre.x:.2f}, {centre.y:.2f}"
+            )
+            assert (centre.xy - where.xy).length < 0.05
