@@ -342,6 +342,7 @@ def test_it_follows_a_hull_carried_by_a_parent_or_a_follow_path(scene):
             ) / len(probes)
             where = hull.evaluated_get(depsgraph).matrix_world.translation
             print(
-                f"frame {frame}, {hull.name}: at {where.x:.2f}, {where.y:.2f}; probes {centre.x:.2f}, {centre.y:.2f}"
+                f"frame {frame}, {hull.name}: at {where.x:.2f}, {where.y:.2f}; "
+                f"probes {centre.x:.2f}, {centre.y:.2f}"
             )
             assert (centre.xy - where.xy).length < 0.05
