@@ -14,7 +14,8 @@ tile breaking them up as it does the shore's foam.
 With the surroundings' attributes (`water_depth`, `water_shore_distance`, `water_surroundings`,
 as on the lake), the lake's rules apply: the bed is seen through the water at
 `T = exp(-Absorption x path)` (`water_surface.transmittance_nodes`), refracted and lit by the
-caustics (`caustics.py`), and the deep colour takes the rest, `deep (1 - T)`; the shore foam is
+caustics (`caustics.py`; a part, built in only while `Caustics` is above 0), and the deep colour
+takes the rest, `deep (1 - T)`; the shore foam is
 the lake's coverage, whichever of it and the whitecaps covers more. Without the attributes
 `T` is 0 and the foam 0: the seeds' ocean exactly.
 Two groups, because a shader group cannot hold the

@@ -11,8 +11,9 @@ Whitecaps break on the highest crests: those standing above the `Crest Share` qu
 heights in the un-faded middle, found every frame by bisection (a few Attribute Statistic passes),
 so the share holds whatever the wind, spectrum, scale or seed (the Ocean modifier's heights are
 far from a normal spread: a few waves near the peak carry most of them). There the point
-attribute `water_whitecaps` is 1, fading with distance like the waves: the ocean shading scatters
-whitecaps over these crests, as many as the wind raises (`ocean.py`).
+attribute `water_whitecaps` is 1, fading with distance like the waves (`water_crest` keeps the
+crests before the foam they leave behind is added): the ocean shading scatters whitecaps over
+these crests, as many as the wind raises (`ocean.py`).
 """
 
 from .spec import GroupSpec, Node, Socket, math, vmath

@@ -8,6 +8,13 @@ from ..water.values import is_water
 from . import _poll
 
 
+def _metres(name, description, soft_max):
+    """A length in metres, 0 or more (0 where the operator takes it from the object's bounds)."""
+    return bpy.props.FloatProperty(
+        name=name, description=description, default=0.0, min=0.0, soft_max=soft_max, unit="LENGTH"
+    )
+
+
 def _floaters(context):
     """The selected objects that are not water."""
     return [obj for obj in context.selected_objects if not is_water(obj)]
@@ -22,36 +29,25 @@ class OBJECT_OT_water_float(bpy.types.Operator):
     bl_label = "Float on Water"
     bl_options = {"REGISTER", "UNDO"}
 
-    draft: bpy.props.FloatProperty(
-        name="Draft",
-        description="How deep the object sits: metres of it below the waterline, from its lowest "
-        "point (0 with Draft from Bounds: a third of its height)",
-        default=0.0,
-        min=0.0,
-        soft_max=20.0,
-        unit="LENGTH",
+    draft: _metres(
+        "Draft",
+        "How deep the object sits: metres of it below the waterline, from its lowest point (0 with "
+        "Draft from Bounds: a third of its height)",
+        20.0,
     )
     draft_from_bounds: bpy.props.BoolProperty(
         name="Draft from Bounds",
         description="Sink the object by a third of its height (its bounding box's)",
         default=True,
     )
-    length: bpy.props.FloatProperty(
-        name="Length",
-        description="Length of the footprint whose water rocks the object, along its longer "
-        "horizontal axis (0: its bounding box's)",
-        default=0.0,
-        min=0.0,
-        soft_max=500.0,
-        unit="LENGTH",
+    length: _metres(
+        "Length",
+        "Length of the footprint whose water rocks the object, along its longer horizontal axis "
+        "(0: its bounding box's)",
+        500.0,
     )
-    beam: bpy.props.FloatProperty(
-        name="Beam",
-        description="Width of the footprint whose water rocks the object (0: its bounding box's)",
-        default=0.0,
-        min=0.0,
-        soft_max=100.0,
-        unit="LENGTH",
+    beam: _metres(
+        "Beam", "Width of the footprint whose water rocks the object (0: its bounding box's)", 100.0
     )
     tilt_damping: bpy.props.FloatProperty(
         name="Tilt Damping",

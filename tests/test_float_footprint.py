@@ -142,7 +142,7 @@ def test_waves_four_hulls_long_pitch_it_as_its_footprint_and_it_keeps_its_draft(
     )
     assert np.abs(want_pitch).max() > math.radians(2.0), "the swell must pitch the hull"
     assert pitch_error < 0.2
-    assert roll_error < 0.3
+    assert roll_error < 0.2
     assert np.abs(z_off).max() < 0.05
 
 
@@ -285,6 +285,11 @@ def test_the_operator_takes_draft_and_footprint_and_the_panel_offers_float_again
     )
     assert result == {"FINISHED"}
     floating = harness.addon("water.floating")
+    # The draft asked for is where the hull sits: its keel 1 m under the plane fitted over the
+    # hull's 25 x 6 m (the probes' 20 x 5 m footprint averages the 100 m swell a little less:
+    # up to 5 cm apart), so its origin stands 0.5 m higher than at the 1.5 m `_track` expects.
+    rows = _track(scene, sea, hull, (1, 60))
+    assert np.abs(rows[:, 4] - 0.5).max() < 0.08
     assert floating.footprint_settings(hull) == {"draft": 1.0, "length": 20.0, "beam": 5.0}
     assert floating.tilt_damping_of(hull) == pytest.approx(0.25)
     labels = [entry[1] for entry in draw_panel() if entry[0] == "label"]

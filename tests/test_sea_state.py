@@ -339,6 +339,7 @@ def test_repair_floating_and_removal_keep_working_with_a_swell(scene):
 
     _api().remove_water(sea, scene)
     assert "Water" not in bpy.data.objects and not cube.constraints
+    assert not [o.name for o in bpy.data.objects if o.get("water_surface_float_rig")], "the rig goes too"
     assert not any(mesh.name.startswith("Water Sea Measure") for mesh in bpy.data.meshes)
 
 

@@ -275,15 +275,10 @@ def out_of_date(obj, pose):
         return f"'{obj.name}' has another animation since it floated"
     if anchor.parent != obj.parent:
         return f"'{obj.name}' has another parent since it floated"
-    if any(
-        (a - b) > 1e-4 or (b - a) > 1e-4 for a, b in zip(_flat(anchor.matrix_basis), _flat(obj.matrix_basis))
-    ):
+    moved = anchor.matrix_basis - obj.matrix_basis
+    if max(abs(value) for row in moved for value in row) > 1e-4:
         return f"'{obj.name}' was moved since it floated"
     return None
-
-
-def _flat(matrix):
-    return [value for row in matrix for value in row]
 
 
 def remove_lost_rigs():
