@@ -24,6 +24,7 @@ from .presets import PresetError
 from .water import camera_clip as _camera_clip
 from .water import files as _files
 from .water import floating as _floating
+from .water import keep_out as _keep_out
 from .water import kind as _kind
 from .water import mirror as _mirror
 from .water import open_sea as _open_sea
@@ -35,6 +36,7 @@ from .water import waves as _waves
 from .water.editable import NotEditableError, check_editable
 from .water.files import FileJobError
 from .water.floating import FloatError
+from .water.keep_out import KeepOutError
 from .water.mirror import MirrorSetupError
 from .water.open_sea import OpenSeaError
 from .water.physical_caustics import PhysicalCausticsError
@@ -49,6 +51,7 @@ __all__ = (
     "AddedWater",
     "FileJobError",
     "FloatError",
+    "KeepOutError",
     "MirrorSetupError",
     "NotEditableError",
     "OpenSeaError",
@@ -62,7 +65,9 @@ __all__ = (
     "extend_camera_clip",
     "float_on_water",
     "is_water",
+    "keep_water_out",
     "kind_of",
+    "let_water_in",
     "preset_ids",
     "read_values",
     "render_file",
@@ -196,6 +201,25 @@ def float_on_water(
 def stop_floating(obj: bpy.types.Object) -> list[str]:
     """Removes what `float_on_water` added; returns the changes in words."""
     return _floating.stop_floating(obj)
+
+
+def keep_water_out(obj: bpy.types.Object, water: bpy.types.Object | None = None) -> list[str]:
+    """Makes `water` (default: the water `obj` floats on, else the water below or above its origin)
+    invisible inside `obj`, a hull: within its outline at the heights the water meets it, wherever
+    it moves and rocks, in EEVEE and Cycles, by nodes in the water's material (no Python at
+    render). Again: made anew from its shape now. KeepOutError when there is no water or `obj`
+    encloses nothing; returns the changes in words."""
+    if water is None:
+        water = _floating.floating_on(obj) or _floating.water_below(obj, bpy.context.scene)
+    if water is None:
+        raise KeepOutError(f"'{obj.name}' is over no water: name the water")
+    return _keep_out.keep_water_out(obj, water)
+
+
+def let_water_in(obj: bpy.types.Object, water: bpy.types.Object | None = None) -> list[str]:
+    """Takes `keep_water_out` off (`water`, default: every water kept out of `obj`); returns the
+    changes in words."""
+    return _keep_out.let_water_in(obj, water)
 
 
 def read_values(water: bpy.types.Object) -> dict:

@@ -4,7 +4,17 @@ This package's descriptions (`SPECS`) are plain data and import without Blender;
 (`builder.py`) and the material modules are the parts that need `bpy`.
 """
 
-from . import bump_uv, caustics, ocean, sea_fade, surroundings, water_surface, water_waves, wind_frame
+from . import (
+    bump_uv,
+    caustics,
+    keep_out,
+    ocean,
+    sea_fade,
+    surroundings,
+    water_surface,
+    water_waves,
+    wind_frame,
+)
 
 SPECS = {
     spec.name: spec
@@ -19,6 +29,7 @@ SPECS = {
         ocean.SHADE_SPEC,
         surroundings.SPEC,
         surroundings.SAMPLE_SPEC,
+        keep_out.SPEC,
     )
 }
 

@@ -6,6 +6,7 @@ from .add_water import OBJECT_OT_water_surface_add
 from .camera_ops import OBJECT_OT_water_camera_clip
 from .caustics_ops import OBJECT_OT_water_physical_caustics
 from .float_ops import OBJECT_OT_water_float, OBJECT_OT_water_float_stop
+from .keep_out_ops import OBJECT_OT_water_keep_out, OBJECT_OT_water_let_in
 from .link_ops import OBJECT_OT_water_surface_bump_set, OBJECT_OT_water_surface_sun_set
 from .mirror_setup import OBJECT_OT_water_mirror_setup
 from .part_ops import OBJECT_OT_water_part_switch
@@ -35,6 +36,8 @@ classes = (
     OBJECT_OT_water_part_switch,
     OBJECT_OT_water_float,
     OBJECT_OT_water_float_stop,
+    OBJECT_OT_water_keep_out,
+    OBJECT_OT_water_let_in,
     OBJECT_OT_water_remove,
     OBJECT_OT_water_camera_clip,
     OBJECT_OT_water_sea_swell,

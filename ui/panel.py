@@ -12,7 +12,7 @@ from ..nodes.ocean_material import ocean_nodes
 from ..nodes.water_surface import DEBUG_VIEWS
 from ..nodes.water_waves import WAVE_COUNT
 from ..operators.part_ops import PART_ITEMS
-from ..water import camera_clip, floating, kind, open_sea, physical_caustics
+from ..water import camera_clip, floating, keep_out, kind, open_sea, physical_caustics
 from ..water.editable import why_not_editable
 from ..water.mirror import find_probe
 from ..water.repair import needs_repair
@@ -90,6 +90,7 @@ class VIEW3D_PT_water_surface(bpy.types.Panel):
             layout.label(text="The active object is not water", icon="INFO")
             layout.operator("object.water_surface_add", icon="ADD")
             self.draw_floating(layout, context)
+            self.draw_keep_out(layout, context)
             return
         node = water_node(material)
         row = layout.row(align=True)
@@ -275,6 +276,23 @@ class VIEW3D_PT_water_surface(bpy.types.Panel):
                 again.draft_from_bounds = False
                 again.draft, again.length, again.beam = (settings[k] for k in ("draft", "length", "beam"))
                 again.tilt_damping = floating.tilt_damping_of(obj)
+
+    def draw_keep_out(self, layout, context):
+        """Keep the water out of the selected hulls, or let it in again."""
+        box = layout.box()
+        box.label(text="Dry Inside", icon="MOD_BOOLEAN")
+        row = box.row(align=True)
+        row.operator("object.water_keep_out", icon="MOD_BOOLEAN")
+        row.operator("object.water_let_in", text="Let In", icon="X")
+        obj = context.active_object
+        if obj is None:
+            return
+        for water in keep_out.kept_out_of(obj, context.scene):
+            box.label(text=f"'{water.name}' is kept out of it")
+            stale = keep_out.mask_out_of_date(obj, water)
+            if stale is not None:
+                box.label(text=stale, icon="ERROR")
+                box.operator("object.water_keep_out", text="Keep Water Out Again", icon="FILE_REFRESH")
 
     def draw_waves(self, layout, obj):
         """The wave modifier's inputs, wave by wave, or a button to add it."""

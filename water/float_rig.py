@@ -281,14 +281,27 @@ def out_of_date(obj, pose):
     return None
 
 
+def footprint_settings(obj):
+    """{"draft", "length", "beam"} the object floats with ({} when it does not, or the old way)."""
+    held = obj.get(SETTINGS_KEY)
+    try:
+        return {key: float(held[key]) for key in ("draft", "length", "beam")} if held else {}
+    except (TypeError, KeyError, ValueError):
+        return {}
+
+
 def remove_lost_rigs():
     """Removes the rigs whose object was deleted or no longer floats by them; returns the changes."""
     changes = []
     for anchor in [o for o in bpy.data.objects if o.get(RIG_KEY) == "anchor" and o.library is None]:
         owner = anchor.get(OWNER_KEY)
         poses = [o for o in bpy.data.objects if o.get(RIG_KEY) == "pose" and anchor_of(o) == anchor]
-        used = owner is not None and any(
-            c.target in poses for c in getattr(owner, "constraints", ()) if hasattr(c, "target")
+        # A floating object deleted the ordinary way may live on, in no scene, while something
+        # holds it (a water kept out of it, until `keep_out.remove_lost_hulls`): it is gone too.
+        used = (
+            owner is not None
+            and bool(owner.users_scene)
+            and any(c.target in poses for c in getattr(owner, "constraints", ()) if hasattr(c, "target"))
         )
         if used:
             continue

@@ -17,6 +17,7 @@ from . import float_rig, physical_caustics, surroundings
 from .editable import check_editable
 from .float_constraints import FLOAT, TILT, float_constraints, floating_on, forget, pose_of, remember
 from .float_constraints import constraint as constraint_for
+from .float_rig import footprint_settings
 from .values import is_water
 
 __all__ = (
@@ -74,15 +75,6 @@ def _constraint(obj, role, name, kind):
         found.name = name  # Blender adds ".001" when the user has one of that name
         remember(obj, role, found)
     return found
-
-
-def footprint_settings(obj):
-    """{"draft", "length", "beam"} the object floats with ({} when it does not, or the old way)."""
-    held = obj.get(float_rig.SETTINGS_KEY)
-    try:
-        return {key: float(held[key]) for key in ("draft", "length", "beam")} if held else {}
-    except (TypeError, KeyError, ValueError):
-        return {}
 
 
 def _check_sizes(draft, length, beam):

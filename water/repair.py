@@ -28,7 +28,7 @@ from ..nodes.material import (
 )
 from ..nodes.ocean_material import NORMAL_NODE, OCEAN_NODE, SKY_NODE, fit_shade_parts, ocean_nodes
 from ..nodes.ownership import role_of
-from . import open_sea
+from . import keep_out, open_sea
 from .editable import NotEditableError, check_editable, why_not_editable
 from .kind import LAKE, OCEAN, shading_of
 
@@ -252,11 +252,6 @@ def _link(tree, output, socket):
     tree.links.new(output, socket)
 
 
-def _material_output(tree):
-    outputs = [n for n in tree.nodes if n.type == "OUTPUT_MATERIAL"]
-    return next((n for n in outputs if n.is_active_output), outputs[0] if outputs else None)
-
-
 def repair_water(material, scene=None):
     """Points `material`'s water group node(s) back to the add-on's group; returns what it did, in words.
 
@@ -297,9 +292,9 @@ def repair_water(material, scene=None):
         if spec.name == water_surface.NAME:
             drive_time(material, clock_scene)
             drive_sun(material, sun)
-            output = _material_output(tree)
-            if output is not None:
-                _link(tree, node.outputs["Shader"], output.inputs["Surface"])
+            target = keep_out.water_shader_input(material)  # through the hulls' keep-out, if any
+            if target is not None:
+                _link(tree, node.outputs["Shader"], target)
         elif spec.name == ocean.NORMAL_NAME:
             drive_clock(node.inputs["Time"], clock_scene)
         else:  # the ocean shade: the surroundings' foam and caustics follow the clock and the sun
@@ -319,9 +314,9 @@ def repair_water(material, scene=None):
             _link(tree, sky.outputs[0], shade.inputs["Sky"])
             if sky.type == "TEX_ENVIRONMENT":
                 _link(tree, normal.outputs["Reflection"], sky.inputs["Vector"])
-        output = _material_output(tree)
-        if output is not None:
-            _link(tree, shade.outputs["Shader"], output.inputs["Surface"])
+        target = keep_out.water_shader_input(material)
+        if target is not None:
+            _link(tree, shade.outputs["Shader"], target)
     message = f"Repaired '{material.name}': " + "; ".join(done)
     if all_reset:
         message += "; back to default: " + ", ".join(all_reset)
