@@ -17,7 +17,7 @@ import math
 import bpy
 import numpy as np
 import pytest
-from mathutils import Matrix, Vector
+from mathutils import Vector
 
 import harness
 
