@@ -20,6 +20,7 @@ def test_these_modules_import_without_blender():
         "water.sea_math",
         "nodes.wave_math",
         "water.footprint_math",
+        "water.dry_mask_math",
         "water.whitecap_math",
     ):
         load(name)
