@@ -32,6 +32,7 @@ from .water import physical_caustics as _physical_caustics
 from .water import removal as _removal
 from .water import surroundings as _surroundings
 from .water import values as _values
+from .water import wake as _wake
 from .water import waves as _waves
 from .water.editable import NotEditableError, check_editable
 from .water.files import FileJobError
@@ -45,6 +46,7 @@ from .water.plane import add_water as _add_water
 from .water.removal import RemoveWaterError
 from .water.repair import needs_repair
 from .water.surroundings import SurroundingsError
+from .water.wake import WakeError
 
 __all__ = (
     "AddWaterError",
@@ -58,6 +60,7 @@ __all__ = (
     "PhysicalCausticsError",
     "PresetError",
     "RemoveWaterError",
+    "add_wake_source",
     "add_water",
     "add_water_to_file",
     "add_waves",
@@ -72,6 +75,7 @@ __all__ = (
     "read_values",
     "render_file",
     "remove_surroundings",
+    "remove_wake_source",
     "remove_water",
     "set_physical_caustics",
     "set_surroundings",
@@ -79,6 +83,7 @@ __all__ = (
     "setup_mirror",
     "stop_floating",
     "SurroundingsError",
+    "WakeError",
     "switch_part",
     "write_values",
 )
@@ -220,6 +225,26 @@ def let_water_in(obj: bpy.types.Object, water: bpy.types.Object | None = None) -
     """Takes `keep_water_out` off (`water`, default: every water kept out of `obj`); returns the
     changes in words."""
     return _keep_out.let_water_in(obj, water)
+
+
+def add_wake_source(
+    obj: bpy.types.Object, water: bpy.types.Object | None = None, strength: float = 1.0
+) -> list[str]:
+    """Makes `obj` leave a Kelvin wake and foam on `water` (default: the water it floats on, else
+    the water below or above its origin) as it moves: in the water's evaluated mesh (a `Water
+    Wake` modifier whose simulation zone keeps its track), the foam as `water_wake_foam`.
+    `strength` scales the waves' height. Again: its sizes brought up to date. WakeError when
+    there is no water; returns the changes in words."""
+    if water is None:
+        water = _floating.floating_on(obj) or _floating.water_below(obj, bpy.context.scene)
+    if water is None:
+        raise WakeError(f"'{obj.name}' is over no water: name the water")
+    return _wake.add_wake_source(obj, water, strength)
+
+
+def remove_wake_source(obj: bpy.types.Object, water: bpy.types.Object | None = None) -> list[str]:
+    """Takes `obj`'s wake off `water` (default: off every water); returns the changes in words."""
+    return _wake.remove_wake_source(obj, water)
 
 
 def read_values(water: bpy.types.Object) -> dict:

@@ -159,6 +159,10 @@ def _rebuild_nodes(tree, spec, images, nested):
             nodes[key] = _new_node(tree, key, description, images, nested)
         else:
             skipped.add(key)
+    for key, description in spec.nodes.items():  # zones: the input takes its output's items
+        if description.pair and key in nodes:
+            nodes[key].pair_with_output(nodes[description.pair])
+            _set_values(nodes[key], description.values)  # its sockets came with the pairing
     for source, target in spec.links:
         if {source.partition(":")[0], target.partition(":")[0]} & skipped:
             continue
@@ -182,12 +186,22 @@ def _new_node(tree, key, description, images, nested):
         node.node_tree = nested[description.group]
     for prop, value in description.props.items():
         setattr(node, prop, images[value] if isinstance(value, str) and value in images else value)
-    for socket_key, value in description.values.items():
+    if description.items:
+        node.state_items.clear()
+        for socket_type, name in description.items:
+            node.state_items.new(socket_type, name)
+    if not description.pair:
+        _set_values(node, description.values)
+    return node
+
+
+def _set_values(node, values):
+    """The node's unlinked input values (a colour given as RGB gets alpha 1)."""
+    for socket_key, value in values.items():
         socket = node.inputs[socket_key]
         if hasattr(socket.default_value, "__len__") and len(socket.default_value) == 4 and len(value) == 3:
             value = (*value, 1.0)
         socket.default_value = value
-    return node
 
 
 def _socket(nodes, address, side):

@@ -48,6 +48,10 @@ class Node:
     since: tuple | None = None
     before: tuple | None = None
     part: str | None = None  # the optional `Part` it belongs to (None: every variant has it)
+    # A zone's output node (Simulation Output): its state items, (socket type, name) in order.
+    items: tuple = ()
+    # A zone's input node (Simulation Input): the key of the output node it pairs with.
+    pair: str | None = None
 
 
 @dataclass(frozen=True)

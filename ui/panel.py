@@ -12,7 +12,7 @@ from ..nodes.ocean_material import ocean_nodes
 from ..nodes.water_surface import DEBUG_VIEWS
 from ..nodes.water_waves import WAVE_COUNT
 from ..operators.part_ops import PART_ITEMS
-from ..water import camera_clip, floating, keep_out, kind, open_sea, physical_caustics
+from ..water import camera_clip, floating, keep_out, kind, open_sea, physical_caustics, wake
 from ..water.editable import why_not_editable
 from ..water.mirror import find_probe
 from ..water.repair import needs_repair
@@ -91,6 +91,7 @@ class VIEW3D_PT_water_surface(bpy.types.Panel):
             layout.operator("object.water_surface_add", icon="ADD")
             self.draw_floating(layout, context)
             self.draw_keep_out(layout, context)
+            self.draw_wake(layout, context)
             return
         node = water_node(material)
         row = layout.row(align=True)
@@ -293,6 +294,17 @@ class VIEW3D_PT_water_surface(bpy.types.Panel):
             if stale is not None:
                 box.label(text=stale, icon="ERROR")
                 box.operator("object.water_keep_out", text="Keep Water Out Again", icon="FILE_REFRESH")
+
+    def draw_wake(self, layout, context):
+        """Make the selected objects leave a wake, or no longer."""
+        box = layout.box()
+        box.label(text="Wake", icon="FORCE_HARMONIC")
+        row = box.row(align=True)
+        row.operator("object.water_wake_add", icon="FORCE_HARMONIC")
+        row.operator("object.water_wake_remove", text="Remove", icon="X")
+        obj = context.active_object
+        for modifier in wake.modifiers_of(obj) if obj is not None else ():
+            box.label(text=f"Leaves a wake on '{modifier.id_data.name}'")
 
     def draw_waves(self, layout, obj):
         """The wave modifier's inputs, wave by wave, or a button to add it."""

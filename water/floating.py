@@ -13,7 +13,7 @@ or the open sea's Ocean modifier. No Python runs at render.
 import bpy
 from mathutils import Vector
 
-from . import float_rig, physical_caustics, surroundings
+from . import float_rig, physical_caustics, surroundings, wake
 from .editable import check_editable
 from .float_constraints import FLOAT, TILT, float_constraints, floating_on, forget, pose_of, remember
 from .float_constraints import constraint as constraint_for
@@ -109,6 +109,7 @@ def float_on_water(obj, water, tilt_damping=0.0, draft=None, length=None, beam=N
     own = [c for c in obj.constraints if c not in ours]
     pose, settings = float_rig.build(obj, water, scene or bpy.context.scene, own, draft, length, beam)
     obj[float_rig.SETTINGS_KEY] = settings
+    wake.follow_again(obj)  # its wake reads the new anchor (reading `obj` would be a cycle)
     tilt = _constraint(obj, "tilt", TILT, "COPY_ROTATION")
     tilt.target = pose
     tilt.mix_mode = "AFTER"
@@ -149,6 +150,7 @@ def release(obj):
     """Takes the add-on's floating constraints and rig off `obj` (no checks); returns the changes."""
     found = float_constraints(obj)
     pose = pose_of(obj)
+    wakes = wake.modifiers_of(obj)  # found by the anchor, which goes
     for constraint in found:
         obj.constraints.remove(constraint)
     if pose is not None and float_rig.owned_by(pose, obj):
@@ -157,6 +159,7 @@ def release(obj):
     forget(obj)
     if float_rig.SETTINGS_KEY in obj:
         del obj[float_rig.SETTINGS_KEY]
+    wake.follow_again(obj, wakes)
     return [f"'{obj.name}' no longer floats"] if found else []
 
 

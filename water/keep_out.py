@@ -74,15 +74,23 @@ def kept_out_of(obj, scene=None):
     return [water for water in objects if is_water(water) and obj in hulls_of(water)]
 
 
+# Mix Shaders the add-on puts between the water's shader and the output, outermost first: the
+# hulls' keep-out, then the wakes' foam (`wake.py`). Each takes the water's side as Shader 1.
+WRAPPERS = (MIX_NODE, "Water Wake Foam")
+
+
 def water_shader_input(material):
-    """The socket the water's own shader feeds: the keep-out mix's when there is one, else the
-    Material Output's Surface (repair links the water's shader there)."""
-    tree = material.node_tree
-    mix = tree.nodes.get(MIX_NODE)
-    if mix is not None and mix.type == "MIX_SHADER":
-        return mix.inputs[1]
-    output = _output(tree)
-    return output.inputs["Surface"] if output is not None else None
+    """The socket the water's own shader feeds: through the add-on's mixes (`WRAPPERS`) to the
+    innermost one's Shader 1, else the Material Output's Surface (repair links the water's shader
+    there)."""
+    output = _output(material.node_tree)
+    socket = output.inputs["Surface"] if output is not None else None
+    while socket is not None and socket.is_linked:
+        feeding = socket.links[0].from_node
+        if feeding.type != "MIX_SHADER" or feeding.name not in WRAPPERS:
+            break
+        socket = feeding.inputs[1]
+    return socket
 
 
 def _evaluated_triangles(obj, depsgraph):

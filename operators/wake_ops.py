@@ -1,0 +1,88 @@
+"""`object.water_wake_add` and `object.water_wake_remove`: the selected objects leave a wake as
+they move, or no longer."""
+
+import bpy
+
+from ..water import wake
+from ..water.editable import NotEditableError
+from ..water.float_constraints import floating_on
+from ..water.floating import water_below
+from ..water.values import is_water
+from . import _poll
+
+
+def _movers(context):
+    """The selected objects that are not water."""
+    return [obj for obj in context.selected_objects if not is_water(obj)]
+
+
+class OBJECT_OT_water_wake_add(bpy.types.Operator):
+    """Make the selected objects leave a Kelvin wake and foam on the water as they move (on the
+    selected water, else the water they float on or lie over). Again: their sizes brought up to
+    date"""
+
+    bl_idname = "object.water_wake_add"
+    bl_label = "Add Wake"
+    bl_options = {"REGISTER", "UNDO"}
+
+    strength: bpy.props.FloatProperty(
+        name="Strength",
+        description="How high the wake's waves are (1: the draft times the Froude number squared)",
+        default=1.0,
+        min=0.0,
+        soft_max=3.0,
+    )
+
+    @classmethod
+    def poll(cls, context):
+        if not _movers(context):
+            return _poll.refuse(cls, "Select the objects that leave a wake (and the water, if you like)")
+        return True
+
+    def execute(self, context):
+        chosen = [obj for obj in context.selected_objects if is_water(obj)]
+        if len(chosen) > 1:
+            self.report({"ERROR"}, "Select one water at most: the others leave their wake on it")
+            return {"CANCELLED"}
+        depsgraph = context.evaluated_depsgraph_get()
+        done, skipped = [], []
+        for obj in _movers(context):
+            water = chosen[0] if chosen else floating_on(obj) or water_below(obj, context.scene, depsgraph)
+            if water is None:
+                skipped.append(f"'{obj.name}' is over no water: select the water too")
+                continue
+            try:
+                done += wake.add_wake_source(obj, water, self.strength)
+            except (wake.WakeError, NotEditableError) as error:
+                skipped.append(str(error))
+        for message in skipped:
+            self.report({"WARNING"}, message)
+        if not done:
+            self.report({"ERROR"}, "No wake added: " + "; ".join(skipped))
+            return {"CANCELLED"}
+        self.report({"INFO"}, "; ".join(done))
+        return {"FINISHED"}
+
+
+class OBJECT_OT_water_wake_remove(bpy.types.Operator):
+    """The selected objects leave no wake any more"""
+
+    bl_idname = "object.water_wake_remove"
+    bl_label = "Remove Wake"
+    bl_options = {"REGISTER", "UNDO"}
+
+    @classmethod
+    def poll(cls, context):
+        if not any(wake.modifiers_of(obj) for obj in context.selected_objects):
+            return _poll.refuse(cls, "No selected object leaves a wake")
+        return True
+
+    def execute(self, context):
+        changes = []
+        for obj in context.selected_objects:
+            try:
+                changes += wake.remove_wake_source(obj)
+            except NotEditableError as error:
+                self.report({"WARNING"}, str(error))
+        self.report({"INFO"}, "; ".join(changes) or "no change")
+        return {"FINISHED"}

@@ -1,0 +1,227 @@
+"""Issue 25 point 3: a moving hull leaves a Kelvin wake and foam in the water's mesh.
+
+A 10 x 3 x 2 m box hull floats 0.8 m deep on a 80 m lake meshed at 0.25 m and is keyed to run
+at 3.5 m/s (Froude number 0.35) along a diagonal, 0.6 rad off the x axis. After 6 s (frames 1
+to 145, stepped in order as a render does), the evaluated mesh is read in the track's frame:
+`x` metres behind the hull along its track, `y` across.
+
+* The arms: for each `x` from 6 to 16 m, the largest height on each side of the track lies at
+  19.5° ± 3° from it (Kelvin's asin(1/3)); checked on the lake and on the open sea (there the
+  wake is the difference with the sea's own waves, the wake's modifier off).
+* The transverse waves along the track: wavelength 2πU²/g (7.85 m) within 15%, from the
+  crossings of zero between 3 and 15 m behind.
+* Heights: twice the draft, twice the height; a slower hull, lower waves; lower further behind.
+* Foam round the hull and along the track behind it, drifted downwind, none ahead of it.
+* A turning hull: the foam lies along the bend it took, not along its heading now.
+"""
+
+import math
+
+import bpy
+import numpy as np
+import pytest
+
+import harness
+
+G = 9.81
+SPEED = 3.5
+HEADING = 0.6
+START = np.array([-22.0, -14.0])
+LAST_FRAME = 145
+FPS = 24
+HULL = (10.0, 3.0, 2.0)
+DRAFT = 0.8
+WIND = np.array([0.6, -0.8])  # the lake's wind: the foam drifts this way
+
+
+def _api():
+    return harness.addon("api")
+
+
+def _linear(obj):
+    action = obj.animation_data.action
+    for fcurve in harness.addon("nodes.material")._action_fcurves(action):
+        for key in fcurve.keyframe_points:
+            key.interpolation = "LINEAR"
+
+
+def _hull(scene, name="Hull", size=HULL):
+    mesh = bpy.data.meshes.new(name)
+    half = [s / 2.0 for s in size]
+    corners = [
+        (x, y, z) for x in (-half[0], half[0]) for y in (-half[1], half[1]) for z in (-half[2], half[2])
+    ]
+    faces = [(0, 1, 3, 2), (4, 6, 7, 5), (0, 4, 5, 1), (2, 3, 7, 6), (0, 2, 6, 4), (1, 5, 7, 3)]
+    mesh.from_pydata(corners, [], faces)
+    hull = bpy.data.objects.new(name, mesh)
+    scene.collection.objects.link(hull)
+    return hull
+
+
+def _run_straight(hull, speed=SPEED, heading=HEADING, start=START):
+    direction = np.array([math.cos(heading), math.sin(heading)])
+    for frame in (1, LAST_FRAME):
+        seconds = (frame - 1) / FPS
+        hull.location = (*(start + direction * speed * seconds), 0.0)
+        hull.rotation_euler = (0.0, 0.0, heading)
+        hull.keyframe_insert("location", frame=frame)
+        hull.keyframe_insert("rotation_euler", frame=frame)
+    _linear(hull)
+
+
+def _step(scene, last=LAST_FRAME):
+    """Frames 1 to `last` in order (the simulation steps as a render does)."""
+    for frame in range(1, last + 1):
+        scene.frame_set(frame)
+
+
+def _surface(water):
+    """(points (N, 3), foam (N,)) of the evaluated water, in its own space."""
+    evaluated = water.evaluated_get(bpy.context.evaluated_depsgraph_get())
+    mesh = evaluated.to_mesh()
+    try:
+        points = np.empty(len(mesh.vertices) * 3)
+        mesh.vertices.foreach_get("co", points)
+        foam = np.zeros(len(mesh.vertices))
+        attribute = mesh.attributes.get("water_wake_foam")
+        if attribute is not None:
+            attribute.data.foreach_get("value", foam)
+        return points.reshape(-1, 3), foam
+    finally:
+        evaluated.to_mesh_clear()
+
+
+def _track_frame(points, where, heading):
+    """(x behind, y across to the left) of `points` from a hull at `where` heading `heading`."""
+    direction = np.array([math.cos(heading), math.sin(heading)])
+    offset = points[:, :2] - where
+    return -(offset @ direction), offset[:, 1] * direction[0] - offset[:, 0] * direction[1]
+
+
+def _arm_angles(x, y, height, xs=(6.0, 8.0, 10.0, 12.0, 14.0, 16.0)):
+    """For each x, the angles (degrees) at which the largest |height| lies on each side."""
+    angles = []
+    for x0 in xs:
+        near = np.abs(x - x0) < 0.3
+        for side in (1.0, -1.0):
+            pick = near & (side * y > 0.3)
+            k = np.argmax(np.abs(height[pick]))
+            angles.append(math.degrees(math.atan(abs(y[pick][k]) / x0)))
+    return np.array(angles)
+
+
+def _end(start=START, speed=SPEED, heading=HEADING):
+    return start + np.array([math.cos(heading), math.sin(heading)]) * speed * (LAST_FRAME - 1) / FPS
+
+
+@pytest.fixture(scope="module")
+def lake_wake(addon, eevee):
+    scene = harness.clean_scene(width=64, height=64, samples=1)
+    scene.render.fps = FPS
+    water = _api().add_water(scene, preset="lake", size=80.0, resolution=321, name="Lake").object
+    _api().write_values(water, {"wind_direction": tuple(WIND)})
+    hull = _hull(scene)
+    _run_straight(hull)
+    _api().float_on_water(hull, water, draft=DRAFT)
+    changes = _api().add_wake_source(hull, water)
+    _step(scene)
+    points, foam = _surface(water)
+    return {"scene": scene, "water": water, "hull": hull, "points": points, "foam": foam, "changes": changes}
+
+
+def test_the_arms_open_at_kelvins_angle_on_the_lake(lake_wake):
+    x, y = _track_frame(lake_wake["points"], _end(), HEADING)
+    angles = _arm_angles(x, y, lake_wake["points"][:, 2])
+    print("arm angles", angles.round(1))
+    assert np.abs(angles.mean() - 19.47) < 3.0
+    assert np.all(np.abs(angles - 19.47) < 6.0)
+
+
+def test_the_transverse_waves_are_2_pi_u2_over_g_long(lake_wake):
+    x, y = _track_frame(lake_wake["points"], _end(), HEADING)
+    line = (np.abs(y) < 0.2) & (x > 3.0) & (x < 15.0)
+    order = np.argsort(x[line])
+    xs, zs = x[line][order], lake_wake["points"][line, 2][order]
+    crossings = xs[1:][np.sign(zs[1:]) != np.sign(zs[:-1])]
+    measured = 2.0 * np.diff(crossings).mean()
+    expected = 2.0 * math.pi * SPEED**2 / G
+    print(
+        "transverse wavelength",
+        round(measured, 2),
+        "expected",
+        round(expected, 2),
+        "crossings",
+        crossings.round(2),
+    )
+    assert abs(measured - expected) < 0.15 * expected
+
+
+def test_foam_round_the_hull_and_behind_it_drifted_downwind_none_ahead(lake_wake):
+    x, y = _track_frame(lake_wake["points"], _end(), HEADING)
+    foam = lake_wake["foam"]
+    beside = (np.abs(x) < 4.0) & (np.abs(y) < 2.0)
+    assert foam[beside].max() > 0.9
+    ahead = (x < -8.0) & (np.abs(y) < 3.0)  # a beam ahead of the bow
+    assert foam[ahead].max() < 0.05
+    behind = (x > 12.0) & (x < 14.0)
+    assert foam[behind].max() > 0.3
+    # Downwind: the foam's middle 13 m behind lies on the wind's side of the track.
+    direction = np.array([math.cos(HEADING), math.sin(HEADING)])
+    left = np.array([-direction[1], direction[0]])
+    side = np.sign(WIND @ left)
+    middle = (foam[behind] * y[behind]).sum() / foam[behind].sum()
+    print("foam's middle across the track, 13 m behind", round(middle, 2))
+    assert side * middle > 0.5
+
+
+def test_heights_grow_with_draft_and_speed_and_fall_behind(lake_wake):
+    x, y = _track_frame(lake_wake["points"], _end(), HEADING)
+    height = np.abs(lake_wake["points"][:, 2])
+    wedge = np.abs(y) < 0.4 * x
+    near = height[wedge & (x > 5.0) & (x < 8.0)].max()
+    far = height[wedge & (x > 15.0) & (x < 18.0)].max()
+    assert far < 0.8 * near
+    wake = harness.addon("water.wake")
+    (modifier,) = wake.wake_modifiers(lake_wake["water"])
+    waves = harness.addon("water.waves")
+    assert waves.get_wave_input(modifier, "Draft") == pytest.approx(DRAFT)
+    scene = lake_wake["scene"]
+    waves.set_wave_input(modifier, "Draft", 2 * DRAFT)
+    _step(scene)
+    points, _foam = _surface(lake_wake["water"])
+    deeper = np.abs(points[:, 2])[wedge & (x > 5.0) & (x < 8.0)].max()
+    assert deeper == pytest.approx(2 * near, rel=0.05)
+    waves.set_wave_input(modifier, "Draft", DRAFT)
+
+
+def test_a_turning_hull_leaves_its_foam_along_the_bend(addon, eevee):
+    scene = harness.clean_scene(width=64, height=64, samples=1)
+    scene.render.fps = FPS
+    water = _api().add_water(scene, preset="lake", size=80.0, resolution=161, name="Lake").object
+    hull = _hull(scene)
+    # A quarter circle of 15 m radius in 6 s, turning left from heading 0.3 rad.
+    radius, turn = 15.0, math.pi / 2
+    centre = np.array([-10.0, 0.0])
+    path = []
+    for frame in range(1, LAST_FRAME + 1, 12):
+        angle = -math.pi / 2 + 0.3 + turn * (frame - 1) / (LAST_FRAME - 1)
+        where = centre + radius * np.array([math.cos(angle), math.sin(angle)])
+        hull.location = (*where, 0.0)
+        hull.rotation_euler = (0.0, 0.0, angle + math.pi / 2)
+        hull.keyframe_insert("location", frame=frame)
+        hull.keyframe_insert("rotation_euler", frame=frame)
+        path.append(where)
+    _api().add_wake_source(hull, water)
+    _step(scene)
+    points, foam = _surface(water)
+    now = np.array(hull.matrix_world.translation[:2])
+    heading = hull.matrix_world.to_euler().z
+
+    def foam_near(point):
+        return foam[np.linalg.norm(points[:, :2] - point, axis=1) < 1.0].max()
+
+    on_bend = path[len(path) // 3]  # where it was 4 s ago
+    straight_back = now - np.array([math.cos(heading), math.sin(heading)]) * np.linalg.norm(now - on_bend)
+    print("foam on the bend", foam_near(on_bend), "straight back", foam_near(straight_back))
+    assert foam_near(on_bend) > 0.2
+    assert foam_near(straight_back) < 0.02

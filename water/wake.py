@@ -1,0 +1,229 @@
+"""Wakes: an object that moves through the water leaves a Kelvin wake and foam in its mesh.
+
+Per source, the water gets a `Water Wake` Geometry Nodes modifier (`nodes/wake.py`: the track
+kept by a simulation zone, the stationary-phase Kelvin pattern, the foam), after its waves and
+before its surroundings' sample, so the surroundings see the wake too. The modifier reads where
+the object is through an Object socket: a floating object's rig anchor (the anchor moves as the
+object does before it floats, and reading the object itself would make a dependency cycle, the
+water waiting on the object that waits on the water). The hull's length, beam and draft come
+from its float's footprint, else from its bounds.
+
+The material shows the foam (`water_wake_foam`) through one Mix Shader ("Water Wake Foam") with a
+white, rough foam shader, put where the water's shader feeds the output (inside the keep-out, so
+a dry hull stays dry): the lake and the ocean shading alike.
+"""
+
+import bpy
+import numpy as np
+
+from ..nodes import SPECS
+from ..nodes import wake as wake_spec
+from ..nodes.builder import ensure_group
+from ..nodes.ownership import role_of
+from . import footprint_math, keep_out
+from .editable import check_editable
+from .float_constraints import pose_of
+from .float_rig import OWNER_KEY, anchor_of, footprint_of, footprint_settings
+from .values import is_water, read_values, water_material
+from .waves import SURROUNDINGS_ROLE, input_ids, set_wave_input
+
+FOAM_MIX = "Water Wake Foam"
+FOAM_SHADER = "Water Wake Foam Shader"
+FOAM_READ = "Water Wake Foam Amount"
+FOAM_COLOR = (0.85, 0.88, 0.9, 1.0)
+LAKE_DRIFT = 0.3  # m/s: foam drift downwind on a lake or the seeds' ocean
+SEA_DRIFT = 0.03  # of the wind speed, on the open sea (the surface drift: about 3%)
+
+
+class WakeError(ValueError):
+    """A wake cannot be made (one line, says why)."""
+
+
+def wake_modifiers(water):
+    """The water's `Water Wake` modifiers, in order."""
+    return [
+        m
+        for m in getattr(water, "modifiers", ())
+        if m.type == "NODES" and m.node_group is not None and role_of(m.node_group) == wake_spec.NAME
+    ]
+
+
+def _source_input(modifier):
+    identifier = input_ids(modifier).get("Source")
+    interface = getattr(modifier, "properties", None)
+    if interface is not None and hasattr(interface, "inputs"):
+        return getattr(interface.inputs, identifier).value
+    return modifier.get(identifier)
+
+
+def source_of(modifier):
+    """The object a wake modifier follows (a floating object, not its anchor), or None."""
+    source = _source_input(modifier)
+    if source is None:
+        return None
+    owner = source.get(OWNER_KEY) if hasattr(source, "get") else None
+    return owner if owner is not None else source
+
+
+def wake_sources(water):
+    """The objects that leave a wake on `water`."""
+    return [s for s in (source_of(m) for m in wake_modifiers(water)) if s is not None]
+
+
+def modifiers_of(obj):
+    """The wake modifiers (on any water) that follow `obj`."""
+    return [m for water in bpy.data.objects for m in wake_modifiers(water) if source_of(m) == obj]
+
+
+def follow_again(obj, modifiers=None):
+    """Points `obj`'s wake modifiers (default: those found now) at what they must read now: its
+    rig's anchor while it floats, itself when not (floating and stopping call it)."""
+    for modifier in modifiers if modifiers is not None else modifiers_of(obj):
+        set_wave_input(modifier, "Source", _follow(obj))
+
+
+def _follow(obj):
+    """What the modifier reads: the rig's anchor of a floating object (no cycle), else `obj`."""
+    pose = pose_of(obj)
+    anchor = anchor_of(pose) if pose is not None else None
+    return anchor if anchor is not None else obj
+
+
+def _hull_sizes(obj):
+    """(length, beam, draft) in metres: the float's footprint, else the bounds."""
+    settings = footprint_settings(obj)
+    if settings:
+        return settings["length"], settings["beam"], settings["draft"]
+    length, beam, _centre, _axis, _keel, height = footprint_of(obj)
+    return max(length, 0.01), max(beam, 0.01), footprint_math.default_draft(height)
+
+
+def _cell(water):
+    """The water mesh's typical cell, metres (the median of some of its edges' lengths)."""
+    mesh = water.data
+    count = min(len(mesh.edges), 4000)
+    if count == 0:
+        return 1.0
+    ends = np.empty(len(mesh.edges) * 2, dtype=np.int64)
+    mesh.edges.foreach_get("vertices", ends)
+    points = np.empty(len(mesh.vertices) * 3)
+    mesh.vertices.foreach_get("co", points)
+    points = points.reshape(-1, 3)
+    ends = ends.reshape(-1, 2)[:count]
+    scale = max(water.matrix_world.to_scale()[:2])
+    return float(np.median(np.linalg.norm(points[ends[:, 0]] - points[ends[:, 1]], axis=1))) * scale
+
+
+def _drift(water):
+    """The foam's drift, metres a second, downwind (the water's wind direction)."""
+    values = read_values(water_material(water))
+    direction = np.array(values.get("wind_direction", (0.0, 1.0))[:2], dtype=float)
+    norm = np.linalg.norm(direction)
+    direction = direction / norm if norm > 0 else np.array([0.0, 1.0])
+    ocean = next((m for m in water.modifiers if m.type == "OCEAN"), None)
+    speed = SEA_DRIFT * ocean.wind_velocity if ocean is not None else LAKE_DRIFT
+    return (*(direction * speed), 0.0)
+
+
+def _place(water, modifier):
+    """Before the surroundings' sample (which measures the surface), after everything else."""
+    modifiers = list(water.modifiers)
+    later = [
+        i
+        for i, m in enumerate(modifiers)
+        if m.type == "NODES" and m.node_group is not None and role_of(m.node_group) == SURROUNDINGS_ROLE
+    ]
+    if later:
+        water.modifiers.move(modifiers.index(modifier), later[0])
+
+
+def add_wake_source(obj, water, strength=1.0):
+    """Makes `obj` leave a wake on `water` as it moves (again: its sizes and what it follows
+    brought up to date). Returns the changes in words."""
+    if not is_water(water):
+        raise WakeError(f"'{getattr(water, 'name', water)}' is not water")
+    if obj is None or obj == water or is_water(obj):
+        raise WakeError("Water leaves no wake on water: select the moving object and the water")
+    material = water_material(water)
+    check_editable(water, material)
+    modifier = next((m for m in wake_modifiers(water) if source_of(m) == obj), None)
+    change = f"'{obj.name}' leaves a wake on '{water.name}'"
+    if modifier is None:
+        modifier = water.modifiers.new(f"{wake_spec.NAME}: {obj.name}", "NODES")
+        modifier.node_group = ensure_group(wake_spec.SPEC, SPECS)
+        _place(water, modifier)
+    else:
+        change = f"brought '{obj.name}''s wake on '{water.name}' up to date"
+    length, beam, draft = _hull_sizes(obj)
+    for name, value in (
+        ("Source", _follow(obj)),
+        ("Length", length),
+        ("Beam", beam),
+        ("Draft", draft),
+        ("Strength", float(strength)),
+        ("Detail", _cell(water)),
+        ("Drift", _drift(water)),
+    ):
+        set_wave_input(modifier, name, value)
+    show_foam(material)
+    return [change]
+
+
+def remove_wake_source(obj, water=None):
+    """Takes `obj`'s wake off `water` (None: off every water); returns the changes."""
+    changes = []
+    waters = [water] if water is not None else [o for o in bpy.data.objects if wake_modifiers(o)]
+    for each in waters:
+        for modifier in [m for m in wake_modifiers(each) if source_of(m) in (obj, None)]:
+            check_editable(each)
+            each.modifiers.remove(modifier)
+            changes.append(f"'{obj.name}' leaves no wake on '{each.name}'")
+        if not wake_modifiers(each):
+            hide_foam(water_material(each))
+    return changes
+
+
+def show_foam(material):
+    """The foam mix in `material` (made when missing): the wake's foam over the water's shader."""
+    tree = material.node_tree
+    if tree.nodes.get(FOAM_MIX) is not None:
+        return
+    target = keep_out.water_shader_input(material)
+    if target is None or not target.is_linked:
+        raise WakeError(f"Material '{material.name}' has no shader linked to its output")
+    source = target.links[0].from_socket
+    feeding = target.node
+    mix = tree.nodes.new("ShaderNodeMixShader")
+    mix.name, mix.label = FOAM_MIX, "wake foam"
+    mix.location = (feeding.location.x - 200, feeding.location.y - 250)
+    foam = tree.nodes.new("ShaderNodeBsdfPrincipled")
+    foam.name, foam.label = FOAM_SHADER, "foam: white and rough"
+    foam.inputs["Base Color"].default_value = FOAM_COLOR
+    foam.inputs["Roughness"].default_value = 0.9
+    foam.location = (mix.location.x - 300, mix.location.y - 150)
+    amount = tree.nodes.new("ShaderNodeAttribute")
+    amount.name, amount.label = FOAM_READ, "wake foam (0..1)"
+    amount.attribute_type, amount.attribute_name = "GEOMETRY", wake_spec.FOAM_ATTRIBUTE
+    amount.location = (mix.location.x - 300, mix.location.y + 150)
+    tree.links.new(source, mix.inputs[1])
+    tree.links.new(foam.outputs[0], mix.inputs[2])
+    tree.links.new(amount.outputs["Fac"], mix.inputs["Fac"])
+    tree.links.new(mix.outputs[0], target)
+
+
+def hide_foam(material):
+    """Takes the foam mix out of `material`, the water's shader linked where it was."""
+    if material is None or material.node_tree is None:
+        return
+    tree = material.node_tree
+    mix = tree.nodes.get(FOAM_MIX)
+    if mix is None:
+        return
+    source = mix.inputs[1].links[0].from_socket if mix.inputs[1].is_linked else None
+    targets = [link.to_socket for link in mix.outputs[0].links]
+    for name in (FOAM_MIX, FOAM_SHADER, FOAM_READ):
+        node = tree.nodes.get(name)
+        if node is not None:
+            tree.nodes.remove(node)
+    for target in targets if source is not None else ():
+        tree.links.new(source, target)
