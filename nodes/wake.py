@@ -13,7 +13,9 @@ object's frame when `k = g / (U² cos² θ)`; at `tan α = y / x` those that rea
 `tan α < 1 / sqrt(8)` (19.47°), none outside it. Each adds `cos(k (x cos θ + y sin θ))`, made
 smaller where it is short beside the hull (`exp(-0.05 k L)`) or shorter than four mesh cells
 (`Detail`); the two grow where they meet at the wedge's arms (the cusp) and fade just beyond
-it. The height scales as `Strength x Draft x Fr²` (`Fr = U / sqrt(g L)`), falls as
+it (the stationary-phase weight `s^(-1/2)` near the arms, `s = sqrt(1 - 8 tan² α)`, is
+taken as `(s² + 0.01)^(-1/3)`: finite, and highest on the arms, as the Airy function there is).
+The height scales as `Strength x Draft x Fr²` (`Fr = U / sqrt(g L)`), falls as
 `sqrt(L / (L + r))` with distance and `exp(-age / Fade)` with time.
 
 Foam (`water_wake_foam`, 0..1, the larger of this wake's and any before it): round the hull
@@ -313,10 +315,10 @@ def _kelvin_nodes():
         "k_scale": math("DIVIDE", 24, "g / U²", a=G),
         "four_cells": math("MULTIPLY", 22, "4 cells", b=4.0),
         "sum": math("ADD", 40, "both waves"),
-        "cusp_base": math("ADD", 28, "s² + 0.03", b=0.03),
-        "cusp": math("POWER", 29, "higher at the arms", b=-0.25),
+        "cusp_base": math("ADD", 28, "s² + 0.01", b=0.01),
+        "cusp": math("POWER", 29, "higher at the arms", b=-1.0 / 3.0),
         "beyond": math("MINIMUM", 27, "how far outside (< 0)", b=0.0),
-        "beyond_s": math("DIVIDE", 28, "/ 0.02", b=0.02),
+        "beyond_s": math("DIVIDE", 28, "/ 0.04", b=0.04),
         "outside": math("EXPONENT", 29, "fades just beyond the arms"),
         "fr2": math("DIVIDE", 24, "Fr² = U² / (g L)"),
         "gl": math("MULTIPLY", 23, "g L", a=G),

@@ -38,6 +38,15 @@ def _api():
     return harness.addon("api")
 
 
+def _lit(scene):
+    """A dim blue sky and a sun 40 degrees up: foam is lit, the water reflects a dark sky."""
+    harness.set_world_color(scene, (0.08, 0.12, 0.2))
+    sun = bpy.data.objects.new("Sun", bpy.data.lights.new("Sun", "SUN"))
+    sun.data.energy = 3.0
+    sun.rotation_euler = (math.radians(50.0), 0.0, math.radians(20.0))
+    scene.collection.objects.link(sun)
+
+
 def _linear(obj):
     action = obj.animation_data.action
     for fcurve in harness.addon("nodes.material")._action_fcurves(action):
@@ -99,15 +108,45 @@ def _track_frame(points, where, heading):
 
 
 def _arm_angles(x, y, height, xs=(6.0, 8.0, 10.0, 12.0, 14.0, 16.0)):
-    """For each x, the angles (degrees) at which the largest |height| lies on each side."""
+    """For each x (a 2 m band), on each side of the track, the angle (degrees) of the 1-degree
+    sector where the waves are highest (their root mean square): where the arm is."""
     angles = []
+    bins = np.arange(0.0, 45.0, 1.0)
     for x0 in xs:
-        near = np.abs(x - x0) < 0.3
+        near = np.abs(x - x0) < 1.0
         for side in (1.0, -1.0):
-            pick = near & (side * y > 0.3)
-            k = np.argmax(np.abs(height[pick]))
-            angles.append(math.degrees(math.atan(abs(y[pick][k]) / x0)))
+            pick = near & (side * y > 0.0)
+            angle = np.degrees(np.arctan2(np.abs(y[pick]), x[pick]))
+            which = np.digitize(angle, bins)
+            rms = [
+                np.sqrt(np.mean(height[pick][which == i] ** 2)) if (which == i).any() else 0.0
+                for i in range(1, len(bins))
+            ]
+            angles.append(bins[int(np.argmax(rms))] + 0.5)
     return np.array(angles)
+
+
+def _foam_is_white(scene, water, points, foam, render, name):
+    """Renders the water from above, round the hull, and returns (mean brightness where the
+    foam is over 0.5, where there is none)."""
+    end = _end()
+    camera = harness.add_camera(scene, (end[0] - 6.0, end[1] - 3.0, 40.0), (end[0] - 6.0, end[1] - 3.0, 0.0))
+    camera.data.type, camera.data.ortho_scale = "ORTHO", 24.0
+    image = render(scene, name)[..., :3].mean(axis=2)
+    world = np.array(water.matrix_world)
+    at = (np.c_[points, np.ones(len(points))] @ world.T)[:, :3]
+    pixels = harness.world_to_pixel(scene, camera, at).round().astype(int)
+    inside = (
+        (pixels[:, 0] >= 0)
+        & (pixels[:, 0] < image.shape[1])
+        & (pixels[:, 1] >= 0)
+        & (pixels[:, 1] < image.shape[0])
+    )
+    hull = np.linalg.norm(at[:, :2] - end, axis=1) < 7.0  # under the hull: not water
+    white = inside & (foam > 0.5) & ~hull
+    clear = inside & (foam < 0.01)
+    assert white.sum() > 8 and clear.sum() > 200, (white.sum(), clear.sum())
+    return image[pixels[white, 1], pixels[white, 0]].mean(), image[pixels[clear, 1], pixels[clear, 0]].mean()
 
 
 def _end(start=START, speed=SPEED, heading=HEADING):
@@ -118,6 +157,7 @@ def _end(start=START, speed=SPEED, heading=HEADING):
 def lake_wake(addon, eevee):
     scene = harness.clean_scene(width=64, height=64, samples=1)
     scene.render.fps = FPS
+    _lit(scene)
     water = _api().add_water(scene, preset="lake", size=80.0, resolution=321, name="Lake").object
     _api().write_values(water, {"wind_direction": tuple(WIND)})
     hull = _hull(scene)
@@ -174,6 +214,15 @@ def test_foam_round_the_hull_and_behind_it_drifted_downwind_none_ahead(lake_wake
     assert side * middle > 0.5
 
 
+@pytest.mark.render
+def test_the_lakes_shading_shows_the_wakes_foam(lake_wake, render):
+    foam, water = _foam_is_white(
+        lake_wake["scene"], lake_wake["water"], lake_wake["points"], lake_wake["foam"], render, "lake"
+    )
+    print("lake: brightness in the foam", round(foam, 3), "clear water", round(water, 3))
+    assert foam > water + 0.25
+
+
 def test_heights_grow_with_draft_and_speed_and_fall_behind(lake_wake):
     x, y = _track_frame(lake_wake["points"], _end(), HEADING)
     height = np.abs(lake_wake["points"][:, 2])
@@ -225,3 +274,33 @@ def test_a_turning_hull_leaves_its_foam_along_the_bend(addon, eevee):
     print("foam on the bend", foam_near(on_bend), "straight back", foam_near(straight_back))
     assert foam_near(on_bend) > 0.2
     assert foam_near(straight_back) < 0.02
+
+
+@pytest.mark.render
+def test_the_arms_open_at_kelvins_angle_on_the_open_sea_whose_shading_shows_the_foam(addon, eevee, render):
+    scene = harness.clean_scene(width=64, height=64, samples=1)
+    scene.render.fps = FPS
+    _lit(scene)
+    sea = (
+        _api()
+        .add_water(scene, preset="open_sea", sea_wind_speed=5.0, wind_direction=(0.6, -0.8), name="Sea")
+        .object
+    )
+    hull = _hull(scene)
+    _run_straight(hull)
+    _api().add_wake_source(hull, sea)
+    _step(scene)
+    with_wake, _foam = _surface(sea)
+    (modifier,) = harness.addon("water.wake").wake_modifiers(sea)
+    modifier.show_viewport = False
+    without, _none = _surface(sea)
+    height = with_wake[:, 2] - without[:, 2]
+    x, y = _track_frame(with_wake, _end(), HEADING)
+    angles = _arm_angles(x, y, height)
+    print("arm angles on the open sea", angles.round(1), "waves", round(np.abs(without[:, 2]).max(), 2))
+    assert np.abs(without[:, 2]).max() > 0.1, "the sea has waves of its own"
+    assert np.abs(angles.mean() - 19.47) < 3.0
+    modifier.show_viewport = True
+    foam_white, water_colour = _foam_is_white(scene, sea, with_wake, _foam, render, "sea")
+    print("open sea: brightness in the foam", round(foam_white, 3), "clear water", round(water_colour, 3))
+    assert foam_white > water_colour + 0.25

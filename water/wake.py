@@ -8,8 +8,8 @@ object does before it floats, and reading the object itself would make a depende
 water waiting on the object that waits on the water). The hull's length, beam and draft come
 from its float's footprint, else from its bounds.
 
-The material shows the foam (`water_wake_foam`) through one Mix Shader ("Water Wake Foam") with a
-white, rough foam shader, put where the water's shader feeds the output (inside the keep-out, so
+The material shows the foam (`water_wake_foam`) through one Mix Shader ("Water Wake Foam") with an
+unlit white foam (an Emission), put where the water's shader feeds the output (inside the keep-out, so
 a dry hull stays dry): the lake and the ocean shading alike.
 """
 
@@ -99,19 +99,20 @@ def _hull_sizes(obj):
 
 
 def _cell(water):
-    """The water mesh's typical cell, metres (the median of some of its edges' lengths)."""
+    """The water mesh's finest cells, metres (the 5th percentile of its edges' lengths: the
+    open sea's graded mesh is finest round the middle, where the camera is)."""
     mesh = water.data
-    count = min(len(mesh.edges), 4000)
-    if count == 0:
+    if not len(mesh.edges):
         return 1.0
     ends = np.empty(len(mesh.edges) * 2, dtype=np.int64)
     mesh.edges.foreach_get("vertices", ends)
     points = np.empty(len(mesh.vertices) * 3)
     mesh.vertices.foreach_get("co", points)
     points = points.reshape(-1, 3)
-    ends = ends.reshape(-1, 2)[:count]
+    ends = ends.reshape(-1, 2)
     scale = max(water.matrix_world.to_scale()[:2])
-    return float(np.median(np.linalg.norm(points[ends[:, 0]] - points[ends[:, 1]], axis=1))) * scale
+    lengths = np.linalg.norm(points[ends[:, 0]] - points[ends[:, 1]], axis=1)
+    return float(np.percentile(lengths, 5)) * scale
 
 
 def _drift(water):
@@ -196,10 +197,13 @@ def show_foam(material):
     mix = tree.nodes.new("ShaderNodeMixShader")
     mix.name, mix.label = FOAM_MIX, "wake foam"
     mix.location = (feeding.location.x - 200, feeding.location.y - 250)
-    foam = tree.nodes.new("ShaderNodeBsdfPrincipled")
-    foam.name, foam.label = FOAM_SHADER, "foam: white and rough"
-    foam.inputs["Base Color"].default_value = FOAM_COLOR
-    foam.inputs["Roughness"].default_value = 0.9
+    # Unlit, as the shore foam is before 4.5: a diffuse closure in the water's material would
+    # drop EEVEE 4.2's traced refraction, and the sun, light-linked off the water, would not
+    # light it anyway.
+    foam = tree.nodes.new("ShaderNodeEmission")
+    foam.name, foam.label = FOAM_SHADER, "foam: white, unlit"
+    foam.inputs["Color"].default_value = FOAM_COLOR
+    foam.inputs["Strength"].default_value = 1.0
     foam.location = (mix.location.x - 300, mix.location.y - 150)
     amount = tree.nodes.new("ShaderNodeAttribute")
     amount.name, amount.label = FOAM_READ, "wake foam (0..1)"
