@@ -304,3 +304,42 @@ def test_the_arms_open_at_kelvins_angle_on_the_open_sea_whose_shading_shows_the_
     foam_white, water_colour = _foam_is_white(scene, sea, with_wake, _foam, render, "sea")
     print("open sea: brightness in the foam", round(foam_white, 3), "clear water", round(water_colour, 3))
     assert foam_white > water_colour + 0.25
+
+
+def test_floating_and_stopping_keep_the_wake_without_a_cycle_and_a_deleted_hull_leaves_none(scene, tmp_path):
+    water = _api().add_water(scene, preset="lake", size=40.0, resolution=81, name="Lake").object
+    hull = _hull(scene)
+    _run_straight(hull, start=np.array([-12.0, -8.0]))
+    _api().add_wake_source(hull, water)
+    wake = harness.addon("water.wake")
+    (modifier,) = wake.wake_modifiers(water)
+    waves = harness.addon("water.waves")
+    assert waves.get_wave_input(modifier, "Source") == hull
+
+    def cycles():
+        output, _result = harness.blender_output(lambda: _step(scene, 30))
+        return "Dependency cycle" in output
+
+    _api().float_on_water(hull, water, draft=0.6)
+    source = waves.get_wave_input(modifier, "Source")
+    assert source != hull and wake.source_of(modifier) == hull, "it reads the rig's anchor"
+    assert waves.get_wave_input(modifier, "Draft") == pytest.approx(2.0 / 3.0)  # bounds' until added again
+    _api().add_wake_source(hull, water)
+    assert waves.get_wave_input(modifier, "Draft") == pytest.approx(0.6), "the float's draft"
+    assert not cycles()
+    points, _foam = _surface(water)
+    assert np.abs(points[:, 2]).max() > 0.01, "a wake"
+    _api().stop_floating(hull)
+    assert waves.get_wave_input(modifier, "Source") == hull
+    assert wake.modifiers_of(hull) == [modifier]
+
+    bpy.ops.object.select_all(action="DESELECT")
+    hull.select_set(True)
+    bpy.context.view_layer.objects.active = hull
+    bpy.ops.object.delete()
+    path = tmp_path / "deleted.blend"
+    bpy.ops.wm.save_as_mainfile(filepath=str(path))  # the add-on's save handler tidies up
+    assert wake.wake_modifiers(water) == []
+    assert "Water Wake Foam" not in water.active_material.node_tree.nodes
+    bpy.ops.wm.open_mainfile(filepath=str(path))
+    assert [m.name for m in bpy.data.objects["Lake"].modifiers] == ["Water Surroundings Sample"]

@@ -109,7 +109,6 @@ def float_on_water(obj, water, tilt_damping=0.0, draft=None, length=None, beam=N
     own = [c for c in obj.constraints if c not in ours]
     pose, settings = float_rig.build(obj, water, scene or bpy.context.scene, own, draft, length, beam)
     obj[float_rig.SETTINGS_KEY] = settings
-    wake.follow_again(obj)  # its wake reads the new anchor (reading `obj` would be a cycle)
     tilt = _constraint(obj, "tilt", TILT, "COPY_ROTATION")
     tilt.target = pose
     tilt.mix_mode = "AFTER"
@@ -128,6 +127,7 @@ def float_on_water(obj, water, tilt_damping=0.0, draft=None, length=None, beam=N
     order = [c.name for c in obj.constraints]
     if order.index(tilt.name) > order.index(last.name):
         obj.constraints.move(order.index(tilt.name), order.index(last.name))
+    wake.follow_again(obj)  # its wake reads the new anchor (reading `obj` would be a cycle)
     return [
         f"'{obj.name}' floats on '{water.name}' (draft {settings['draft']:.3g} m, footprint "
         f"{settings['length']:.3g} x {settings['beam']:.3g} m, tilt damping {damping:g})"

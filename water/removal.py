@@ -16,7 +16,18 @@ file holds none of it: the scene settings their set-up changed go back by the sa
 import bpy
 
 from ..nodes.ownership import is_original, role_of
-from . import float_rig, floating, keep_out, kind, ledger, mirror, physical_caustics, sun_link, surroundings
+from . import (
+    float_rig,
+    floating,
+    keep_out,
+    kind,
+    ledger,
+    mirror,
+    physical_caustics,
+    sun_link,
+    surroundings,
+    wake,
+)
 from .editable import check_editable
 from .float_constraints import float_constraints, floating_on
 from .values import water_material
@@ -162,6 +173,7 @@ def remove_leftovers():
     changes += _remove_lost_caches()
     changes += _let_floaters_go(None)  # those whose water is gone altogether
     changes += keep_out.remove_lost_hulls()  # before the rigs: a water kept out of a hull holds it
+    changes += wake.remove_lost_sources()  # so does a wake (its Source socket)
     changes += float_rig.remove_lost_rigs()  # those whose floating object is gone
     for probe in [o for o in bpy.data.objects if mirror.is_lost_probe(o)]:
         changes.append(_delete_probe(probe, " (its water was deleted)"))

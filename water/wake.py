@@ -231,3 +231,19 @@ def hide_foam(material):
             tree.nodes.remove(node)
     for target in targets if source is not None else ():
         tree.links.new(source, target)
+
+
+def remove_lost_sources():
+    """Takes off the wakes whose object was deleted (gone, or in no scene any more); returns the
+    changes."""
+    changes = []
+    for water in [o for o in bpy.data.objects if o.library is None and wake_modifiers(o)]:
+        for modifier in wake_modifiers(water):
+            source = source_of(modifier)
+            if source is None or (not source.users_scene and not source.use_fake_user):
+                name = source.name if source is not None else modifier.name
+                water.modifiers.remove(modifier)
+                changes.append(f"'{water.name}' lost the wake of '{name}' (it was deleted)")
+        if not wake_modifiers(water):
+            hide_foam(water_material(water))
+    return changes
