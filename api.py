@@ -65,6 +65,7 @@ __all__ = (
     "add_water_to_file",
     "add_waves",
     "apply_preset",
+    "bake",
     "extend_camera_clip",
     "float_on_water",
     "is_water",
@@ -245,6 +246,14 @@ def add_wake_source(
 def remove_wake_source(obj: bpy.types.Object, water: bpy.types.Object | None = None) -> list[str]:
     """Takes `obj`'s wake off `water` (default: off every water); returns the changes in words."""
     return _wake.remove_wake_source(obj, water)
+
+
+def bake(water: bpy.types.Object, scene: bpy.types.Scene | None = None) -> list[str]:
+    """Bakes the wakes of `water` over the scene's frame range into the .blend (4.3 and later), so
+    frames rendered apart (a farm) equal one run from the start; bake again after changing the
+    moving objects' animation. WakeError on 4.2 (bake from the modifier's panel to a folder) or
+    with no wake; returns the changes in words."""
+    return _wake.bake(water, scene or bpy.context.scene)
 
 
 def read_values(water: bpy.types.Object) -> dict:

@@ -19,7 +19,7 @@ from .remove_ops import OBJECT_OT_water_remove
 from .repair_ops import OBJECT_OT_water_surface_repair
 from .surroundings_ops import OBJECT_OT_water_surroundings_set
 from .swell_ops import OBJECT_OT_water_sea_swell
-from .wake_ops import OBJECT_OT_water_wake_add, OBJECT_OT_water_wake_remove
+from .wake_ops import OBJECT_OT_water_wake_add, OBJECT_OT_water_wake_bake, OBJECT_OT_water_wake_remove
 from .waves_ops import OBJECT_OT_water_waves_add
 
 classes = (
@@ -41,6 +41,7 @@ classes = (
     OBJECT_OT_water_let_in,
     OBJECT_OT_water_wake_add,
     OBJECT_OT_water_wake_remove,
+    OBJECT_OT_water_wake_bake,
     OBJECT_OT_water_remove,
     OBJECT_OT_water_camera_clip,
     OBJECT_OT_water_sea_swell,

@@ -86,3 +86,36 @@ class OBJECT_OT_water_wake_remove(bpy.types.Operator):
                 self.report({"WARNING"}, str(error))
         self.report({"INFO"}, "; ".join(changes) or "no change")
         return {"FINISHED"}
+
+
+class OBJECT_OT_water_wake_bake(bpy.types.Operator):
+    """Bake the wakes on the waters the selected objects move on (or the selected water), over
+    the scene's frame range, into the .blend: frames rendered apart, on a farm, equal one run"""
+
+    bl_idname = "object.water_wake_bake"
+    bl_label = "Bake Wake"
+    bl_options = {"REGISTER"}
+
+    @classmethod
+    def poll(cls, context):
+        if not _waters_to_bake(context):
+            return _poll.refuse(cls, "No wake on the selected objects' water")
+        return True
+
+    def execute(self, context):
+        changes = []
+        for water in _waters_to_bake(context):
+            try:
+                changes += wake.bake(water, context.scene)
+            except (wake.WakeError, NotEditableError) as error:
+                self.report({"ERROR"}, str(error))
+                return {"CANCELLED"}
+        self.report({"INFO"}, "; ".join(changes))
+        return {"FINISHED"}
+
+
+def _waters_to_bake(context):
+    """The selected waters with a wake, and the waters the selected objects leave one on."""
+    found = {obj for obj in context.selected_objects if wake.wake_modifiers(obj)}
+    found |= {m.id_data for obj in context.selected_objects for m in wake.modifiers_of(obj)}
+    return sorted(found, key=lambda water: water.name)

@@ -343,3 +343,32 @@ def test_floating_and_stopping_keep_the_wake_without_a_cycle_and_a_deleted_hull_
     assert "Water Wake Foam" not in water.active_material.node_tree.nodes
     bpy.ops.wm.open_mainfile(filepath=str(path))
     assert [m.name for m in bpy.data.objects["Lake"].modifiers] == ["Water Surroundings Sample"]
+
+
+@pytest.mark.skipif(bpy.app.version < (4, 3, 0), reason="4.2 bakes to a folder (the README says how)")
+def test_a_baked_wake_renders_any_frame_alone_without_the_add_on(scene, tmp_path, addon_disabled_afterwards):
+    from test_repair import draw_panel
+
+    scene.render.fps = FPS
+    scene.frame_start, scene.frame_end = 1, 40
+    water = _api().add_water(scene, preset="lake", size=40.0, resolution=81, name="Lake").object
+    hull = _hull(scene)
+    _run_straight(hull, start=np.array([-12.0, -8.0]))
+    _api().add_wake_source(hull, water)
+    _step(scene, 40)
+    stepped = _surface(water)
+    assert np.abs(stepped[0][:, 2]).max() > 0.05
+    bpy.ops.object.select_all(action="DESELECT")
+    hull.select_set(True)
+    bpy.context.view_layer.objects.active = hull
+    labels = [entry[1] for entry in draw_panel() if entry[0] == "label"]
+    assert "The wake on 'Lake' is not baked: farms render it flat" in labels
+    assert _api().bake(water, scene)
+    assert "The wake on 'Lake' is not baked: farms render it flat" not in [e[1] for e in draw_panel()]
+    path = tmp_path / "baked.blend"
+    bpy.ops.wm.save_as_mainfile(filepath=str(path))
+    scene = harness.reopen_without_add_on(path)
+    scene.frame_set(40)  # straight to the last frame, as a farm's worker does
+    points, foam = _surface(bpy.data.objects["Lake"])
+    assert np.abs(points - stepped[0]).max() < 1e-5
+    assert np.abs(foam - stepped[1]).max() < 1e-5

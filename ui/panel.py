@@ -305,6 +305,10 @@ class VIEW3D_PT_water_surface(bpy.types.Panel):
         obj = context.active_object
         for modifier in wake.modifiers_of(obj) if obj is not None else ():
             box.label(text=f"Leaves a wake on '{modifier.id_data.name}'")
+        for water in {m.id_data for m in (wake.modifiers_of(obj) if obj is not None else ())}:
+            if wake.unbaked(water):
+                box.label(text=f"The wake on '{water.name}' is not baked: farms render it flat", icon="ERROR")
+            box.operator("object.water_wake_bake", icon="FILE_REFRESH")
 
     def draw_waves(self, layout, obj):
         """The wave modifier's inputs, wave by wave, or a button to add it."""

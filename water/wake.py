@@ -155,6 +155,7 @@ def add_wake_source(obj, water, strength=1.0):
         _place(water, modifier)
     else:
         change = f"brought '{obj.name}''s wake on '{water.name}' up to date"
+    _forget_bake(water, modifier)  # its bake, if any, is of the wake before
     length, beam, draft = _hull_sizes(obj)
     for name, value in (
         ("Source", _follow(obj)),
@@ -247,3 +248,64 @@ def remove_lost_sources():
         if not wake_modifiers(water):
             hide_foam(water_material(water))
     return changes
+
+
+PACKED_BAKES_SINCE = (4, 3, 0)  # before: bakes go to a folder on disk
+
+
+BAKED_KEY = "water_surface_wake_baked"  # on the water: the names of its wake modifiers `bake` baked
+
+
+def _baked_names(water):
+    return [str(name) for name in water.get(BAKED_KEY, ())]
+
+
+def _forget_bake(water, modifier):
+    if modifier.name in _baked_names(water):
+        water[BAKED_KEY] = [name for name in _baked_names(water) if name != modifier.name]
+
+
+def unbaked(water):
+    """The wake modifiers of `water` not baked since they last changed (a farm rendering frames
+    apart would show no wake on them)."""
+    return [m for m in wake_modifiers(water) if m.name not in _baked_names(water)]
+
+
+def bake(water, scene):
+    """Bakes the wakes of `water` over `scene`'s frame range, packed into the .blend (4.3 and
+    later): frames rendered apart, on a farm, equal one run from the start. Returns the changes."""
+    modifiers = wake_modifiers(water)
+    if not modifiers:
+        raise WakeError(f"'{water.name}' has no wake to bake")
+    if bpy.app.version < PACKED_BAKES_SINCE:
+        raise WakeError(
+            "Blender 4.2 bakes to a folder beside the saved .blend: bake from the modifier's "
+            "Physics > Simulation Nodes panel (Bake); 4.3 and later pack it into the file"
+        )
+    check_editable(water)
+    for modifier in modifiers:
+        modifier.bake_target = "PACKED"
+    override = {
+        "scene": scene,
+        "object": water,
+        "active_object": water,
+        "selected_objects": [water],
+        "selected_editable_objects": [water],
+    }
+    with bpy.context.temp_override(**override):
+        result = bpy.ops.object.simulation_nodes_cache_bake(selected=True)
+    if "FINISHED" not in result:
+        raise WakeError(f"Baking the wake of '{water.name}' failed")
+    water[BAKED_KEY] = [m.name for m in modifiers]
+    return [
+        f"baked the wake of '{water.name}', frames {scene.frame_start} to {scene.frame_end}, into the file"
+    ]
+
+
+def free_bake(water, scene):
+    """Frees the wakes' bakes of `water` (they simulate again from the start)."""
+    override = {"scene": scene, "object": water, "active_object": water, "selected_objects": [water]}
+    with bpy.context.temp_override(**override):
+        bpy.ops.object.simulation_nodes_cache_delete(selected=True)
+    water.pop(BAKED_KEY, None)
+    return [f"freed the wake's bake of '{water.name}'"]
