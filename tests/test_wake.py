@@ -128,7 +128,7 @@ def _arm_angles(x, y, height, xs=(6.0, 8.0, 10.0, 12.0, 14.0, 16.0)):
 
 def _foam_is_white(scene, water, points, foam, render, name):
     """Renders the water from above, round the hull, and returns (mean brightness where the
-    foam is over 0.5, where there is none)."""
+    foam is over 0.4, where there is none)."""
     end = _end()
     camera = harness.add_camera(scene, (end[0] - 6.0, end[1] - 3.0, 40.0), (end[0] - 6.0, end[1] - 3.0, 0.0))
     camera.data.type, camera.data.ortho_scale = "ORTHO", 24.0
@@ -142,8 +142,8 @@ def _foam_is_white(scene, water, points, foam, render, name):
         & (pixels[:, 1] >= 0)
         & (pixels[:, 1] < image.shape[0])
     )
-    hull = np.linalg.norm(at[:, :2] - end, axis=1) < 7.0  # under the hull: not water
-    white = inside & (foam > 0.5) & ~hull
+    hull = np.linalg.norm(at[:, :2] - end, axis=1) < 6.0  # under the hull: not water
+    white = inside & (foam > 0.4) & ~hull
     clear = inside & (foam < 0.01)
     assert white.sum() > 8 and clear.sum() > 200, (white.sum(), clear.sum())
     return image[pixels[white, 1], pixels[white, 0]].mean(), image[pixels[clear, 1], pixels[clear, 0]].mean()
