@@ -67,8 +67,8 @@ def main():
             times[name].append(per_frame_ms(scene))
     base = times["the lake alone"]
     frames = f"frames {WARM + 1}-{WARM + FRAMES}"
-    print(f"
-Blender {bpy.app.version_string}; {len(lake.data.vertices)} points, {frames}, {ROUNDS} rounds")
+    points = len(lake.data.vertices)
+    print(f"\nBlender {bpy.app.version_string}; {points} points, {frames}, {ROUNDS} rounds")
     print("| case | ms/frame (median) | / the lake alone (median, range) |")
     print("| --- | --- | --- |")
     for name, found in times.items():
