@@ -306,6 +306,7 @@ def test_the_arms_open_at_kelvins_angle_on_the_open_sea_whose_shading_shows_the_
     assert foam_white > water_colour + 0.25
 
 
+@pytest.mark.lts
 def test_floating_and_stopping_keep_the_wake_without_a_cycle_and_a_deleted_hull_leaves_none(scene, tmp_path):
     water = _api().add_water(scene, preset="lake", size=40.0, resolution=81, name="Lake").object
     hull = _hull(scene)
