@@ -18,6 +18,10 @@ taken as `(s² + 0.01)^(-1/3)`: finite, and highest on the arms, as the Airy fun
 The height scales as `Strength x Draft x Fr²` (`Fr = U / sqrt(g L)`), falls as
 `sqrt(L / (L + r))` with distance and `exp(-age / Fade)` with time.
 
+Rings: where the object's origin crosses the water's rest level downwards, a ring: waves twice
+its beam long, whose envelope runs out at their group speed (`ω² = g k + (σ/ρ) k³`: gravity
+and capillary), fading over 4 s and spreading as the ring grows.
+
 Foam (`water_wake_foam`, 0..1, the larger of this wake's and any before it): round the hull
 where it moves through the water, and along the track behind it, drifting with `Drift`
 (metres a second, downwind), spreading and fading with time.
@@ -87,6 +91,8 @@ def _track_nodes():
                 ("VECTOR", "Heading"),
                 ("FLOAT", "Started"),
                 ("FLOAT", "Speed"),
+                ("GEOMETRY", "Rings"),
+                ("FLOAT", "Last Z"),
             ),
             values={"Started": 1.0},
             label="track",
@@ -152,6 +158,159 @@ def _track_nodes():
         ("arc:Value", "sim_out:Arc"),
         ("heading:Result", "sim_out:Heading"),
         ("speed:Value", "sim_out:Speed"),
+    )
+    return nodes, links
+
+
+def _ring_nodes():
+    """Rings: where the object enters the water (its origin crossing the water's rest level
+    downwards), a ring point; each water point takes the nearest ring's waves, `λ` = twice the
+    beam long, their envelope running out at the group speed of `ω² = g k + (σ/ρ) k³`."""
+    nodes = {
+        "src_split": Node("ShaderNodeSeparateXYZ", 2, label="its height"),
+        "was_above": math("GREATER_THAN", 4, "above the water before", b=0.0),
+        "now_below": math("LESS_THAN", 4, "at or below it now", b=1e-4),
+        "crossed": math("MULTIPLY", 5, "crossed"),
+        "entered": math("MULTIPLY", 6, "entered (not on the first step)"),
+        "ring_point": Node("GeometryNodePoints", 8, label="a ring where it entered"),
+        "store_ring": _store("wake_ring_time", "FLOAT", 9),
+        "rings_join": Node("GeometryNodeJoinGeometry", 11, label="rings + this one"),
+        "ring_time_old": _named("wake_ring_time", "FLOAT", 10, "when each ring began"),
+        "ring_age_old": math("SUBTRACT", 11, "ring's age"),
+        "ring_gone": math("GREATER_THAN", 12, "older than 12 s", b=12.0),
+        "rings_drop": Node("GeometryNodeDeleteGeometry", 12, {"domain": "POINT"}, label="drop old rings"),
+        # Each water point and the nearest ring.
+        "ring_nearest": Node("GeometryNodeSampleNearest", 15, {"domain": "POINT"}, label="nearest ring"),
+        "ring_position": Node("GeometryNodeInputPosition", 15, label="ring position"),
+        "ring_time": _named("wake_ring_time", "FLOAT", 15),
+        "ring_at": _sample("FLOAT_VECTOR", 16, "its centre"),
+        "ring_began": _sample("FLOAT", 16, "when it began"),
+        "ring_count": Node("GeometryNodeAttributeDomainSize", 16, {"component": "POINTCLOUD"}, label="rings"),
+        "has_rings": Node("FunctionNodeCompare", 17, {"data_type": "INT", "operation": "GREATER_THAN"}),
+        "ring_r": vmath("DISTANCE", 17, "r"),
+        "ring_age": math("SUBTRACT", 17, "its age"),
+        "ring_lambda": math("MULTIPLY", 22, "λ = 2 B", b=2.0),
+        "ring_k": math("DIVIDE", 23, "k = 2π / λ", a=2.0 * 3.141592653589793),
+        "ring_k2": math("MULTIPLY", 24, "k²"),
+        "ring_sk2": math("MULTIPLY_ADD", 25, "g + (σ/ρ) k²", b=7.3e-5, c=G),
+        "ring_w2": math("MULTIPLY", 26, "ω² = k (g + (σ/ρ) k²)"),
+        "ring_w": math("SQRT", 27, "ω"),
+        "ring_cg_num": math("MULTIPLY_ADD", 25, "g + 3 (σ/ρ) k²", b=3.0 * 7.3e-5, c=G),
+        "ring_cg_den": math("MULTIPLY", 28, "2 ω", b=2.0),
+        "ring_cg": math("DIVIDE", 29, "group speed dω/dk"),
+        "ring_front": math("MULTIPLY", 30, "front: group speed x age"),
+        "ring_dr": math("SUBTRACT", 31, "r - front"),
+        "ring_dr_l": math("DIVIDE", 32, "in wavelengths"),
+        "ring_dr2": math("MULTIPLY", 33, "²"),
+        "ring_dr2n": math("MULTIPLY", 34, "-", b=-1.0),
+        "ring_env": math("EXPONENT", 35, "envelope round the front"),
+        "ring_kr": math("MULTIPLY", 31, "k r"),
+        "ring_wt": math("MULTIPLY", 31, "ω t"),
+        "ring_phase": math("SUBTRACT", 32, "k r - ω t"),
+        "ring_wave": math("COSINE", 33, "cos"),
+        "ring_rl": math("ADD", 31, "front + λ"),
+        "ring_spread": math("DIVIDE", 32, "λ / (front + λ)"),
+        "ring_spread_s": math("SQRT", 33, "spreading"),
+        "ring_fade_s": math("DIVIDE", 31, "age / 4 s", b=4.0),
+        "ring_fade_n": math("MULTIPLY", 32, "-", b=-1.0),
+        "ring_fade": math("EXPONENT", 33, "fading"),
+        "ring_size": math("MULTIPLY", 31, "0.3 B", b=0.3),
+        "ring_a1": math("MULTIPLY", 36, ""),
+        "ring_a2": math("MULTIPLY", 37, ""),
+        "ring_a3": math("MULTIPLY", 38, ""),
+        "ring_a4": math("MULTIPLY", 39, ""),
+        "ring_a5": math("MULTIPLY", 40, "x Strength"),
+        "ring": math("MULTIPLY", 41, "ring height (0 with no ring)"),
+        "total": math("ADD", 47, "wake + ring"),
+    }
+    links = (
+        ("source:Location", "src_split:Vector"),
+        ("src_split:Z", "sim_in:Last Z"),
+        ("sim_in:Last Z", "was_above:#0"),
+        ("src_split:Z", "now_below:#0"),
+        ("was_above:Value", "crossed:#0"),
+        ("now_below:Value", "crossed:#1"),
+        ("crossed:Value", "entered:#0"),
+        ("sim_in:Started", "entered:#1"),
+        ("entered:Value", "ring_point:Count"),
+        ("flat:Vector", "ring_point:Position"),
+        ("ring_point:Points", "store_ring:Geometry"),
+        ("clock:Seconds", "store_ring:Value"),
+        ("store_ring:Geometry", "rings_join:Geometry"),
+        ("sim_in:Rings", "rings_join:Geometry"),
+        ("rings_join:Geometry", "rings_drop:Geometry"),
+        ("clock:Seconds", "ring_age_old:#0"),
+        ("ring_time_old:Attribute", "ring_age_old:#1"),
+        ("ring_age_old:Value", "ring_gone:#0"),
+        ("ring_gone:Value", "rings_drop:Selection"),
+        ("rings_drop:Geometry", "sim_out:Rings"),
+        ("src_split:Z", "sim_out:Last Z"),
+        ("sim_out:Rings", "ring_nearest:Geometry"),
+        ("p_flat:Vector", "ring_nearest:Sample Position"),
+        ("sim_out:Rings", "ring_at:Geometry"),
+        ("ring_position:Position", "ring_at:Value"),
+        ("ring_nearest:Index", "ring_at:Index"),
+        ("sim_out:Rings", "ring_began:Geometry"),
+        ("ring_time:Attribute", "ring_began:Value"),
+        ("ring_nearest:Index", "ring_began:Index"),
+        ("sim_out:Rings", "ring_count:Geometry"),
+        ("ring_count:Point Count", "has_rings:A"),
+        ("p_flat:Vector", "ring_r:#0"),
+        ("ring_at:Value", "ring_r:#1"),
+        ("clock:Seconds", "ring_age:#0"),
+        ("ring_began:Value", "ring_age:#1"),
+        ("input:Beam", "ring_lambda:#0"),
+        ("ring_lambda:Value", "ring_k:#1"),
+        ("ring_k:Value", "ring_k2:#0"),
+        ("ring_k:Value", "ring_k2:#1"),
+        ("ring_k2:Value", "ring_sk2:#0"),
+        ("ring_k:Value", "ring_w2:#0"),
+        ("ring_sk2:Value", "ring_w2:#1"),
+        ("ring_w2:Value", "ring_w:#0"),
+        ("ring_k2:Value", "ring_cg_num:#0"),
+        ("ring_w:Value", "ring_cg_den:#0"),
+        ("ring_cg_num:Value", "ring_cg:#0"),
+        ("ring_cg_den:Value", "ring_cg:#1"),
+        ("ring_cg:Value", "ring_front:#0"),
+        ("ring_age:Value", "ring_front:#1"),
+        ("ring_r:Value", "ring_dr:#0"),
+        ("ring_front:Value", "ring_dr:#1"),
+        ("ring_dr:Value", "ring_dr_l:#0"),
+        ("ring_lambda:Value", "ring_dr_l:#1"),
+        ("ring_dr_l:Value", "ring_dr2:#0"),
+        ("ring_dr_l:Value", "ring_dr2:#1"),
+        ("ring_dr2:Value", "ring_dr2n:#0"),
+        ("ring_dr2n:Value", "ring_env:#0"),
+        ("ring_k:Value", "ring_kr:#0"),
+        ("ring_r:Value", "ring_kr:#1"),
+        ("ring_w:Value", "ring_wt:#0"),
+        ("ring_age:Value", "ring_wt:#1"),
+        ("ring_kr:Value", "ring_phase:#0"),
+        ("ring_wt:Value", "ring_phase:#1"),
+        ("ring_phase:Value", "ring_wave:#0"),
+        ("ring_front:Value", "ring_rl:#0"),
+        ("ring_lambda:Value", "ring_rl:#1"),
+        ("ring_lambda:Value", "ring_spread:#0"),
+        ("ring_rl:Value", "ring_spread:#1"),
+        ("ring_spread:Value", "ring_spread_s:#0"),
+        ("ring_age:Value", "ring_fade_s:#0"),
+        ("ring_fade_s:Value", "ring_fade_n:#0"),
+        ("ring_fade_n:Value", "ring_fade:#0"),
+        ("input:Beam", "ring_size:#0"),
+        ("ring_env:Value", "ring_a1:#0"),
+        ("ring_wave:Value", "ring_a1:#1"),
+        ("ring_a1:Value", "ring_a2:#0"),
+        ("ring_spread_s:Value", "ring_a2:#1"),
+        ("ring_a2:Value", "ring_a3:#0"),
+        ("ring_fade:Value", "ring_a3:#1"),
+        ("ring_a3:Value", "ring_a4:#0"),
+        ("ring_size:Value", "ring_a4:#1"),
+        ("ring_a4:Value", "ring_a5:#0"),
+        ("input:Strength", "ring_a5:#1"),
+        ("ring_a5:Value", "ring:#0"),
+        ("has_rings:Result", "ring:#1"),
+        ("eta:Value", "total:#0"),
+        ("ring:Value", "total:#1"),
     )
     return nodes, links
 
@@ -443,7 +602,7 @@ def _kelvin_nodes():
         ("ramp:Result", "e6:#1"),
         ("e6:Value", "eta:#0"),
         ("in_track:Value", "eta:#1"),
-        ("eta:Value", "lift:Z"),
+        ("total:Value", "lift:Z"),
         ("input:Geometry", "set:Geometry"),
         ("lift:Vector", "set:Offset"),
         ("sim_out:Track", "box:Geometry"),
@@ -619,7 +778,7 @@ def _foam_nodes():
 
 def _spec():
     nodes, links = {}, []
-    for part in (_track_nodes, _frame_nodes, _kelvin_nodes, _foam_nodes):
+    for part in (_track_nodes, _ring_nodes, _frame_nodes, _kelvin_nodes, _foam_nodes):
         more_nodes, more_links = part()
         assert not set(more_nodes) & set(nodes), set(more_nodes) & set(nodes)  # one key, one node
         nodes |= more_nodes
@@ -627,7 +786,8 @@ def _spec():
     return GroupSpec(
         name=NAME,
         version=1,
-        description="The Kelvin wake and foam of one moving object (its track kept by a simulation zone)",
+        description="The Kelvin wake, rings and foam of one moving object (its track kept by a "
+        "simulation zone)",
         tree_type="GeometryNodeTree",
         inputs=(
             Socket("Geometry", "NodeSocketGeometry"),

@@ -13,6 +13,11 @@ to 145, stepped in order as a render does), the evaluated mesh is read in the tr
 * Heights: twice the draft, twice the height; a slower hull, lower waves; lower further behind.
 * Foam round the hull and along the track behind it, drifted downwind, none ahead of it.
 * A turning hull: the foam lies along the bend it took, not along its heading now.
+* A stone dropped in: its ring's front (the radius where the waves are highest) runs out at
+  the group speed of waves twice its width long, `ω² = g k + (σ/ρ) k³`, within 20%: 0.6 m waves
+  (gravity's) and 1.6 cm ones (near the capillary minimum, on a 1 m pond meshed at 2.5 mm).
+* Floating and stopping re-point the wake with no dependency cycle; a deleted hull's wake goes
+  at save; a baked wake renders any frame alone, without the add-on, as the stepped run.
 """
 
 import math
@@ -373,3 +378,48 @@ def test_a_baked_wake_renders_any_frame_alone_without_the_add_on(scene, tmp_path
     points, foam = _surface(bpy.data.objects["Lake"])
     assert np.abs(points - stepped[0]).max() < 1e-5
     assert np.abs(foam - stepped[1]).max() < 1e-5
+
+
+@pytest.mark.parametrize(
+    "stone, pond, resolution, times",
+    [
+        (0.3, 16.0, 161, (2.0, 4.0)),  # waves 0.6 m long: gravity's, group speed 0.49 m/s
+        (0.008, 1.0, 401, (0.4, 0.8)),  # 1.6 cm: near the capillary minimum, group speed 0.24 m/s
+    ],
+)
+def test_a_stone_dropped_in_makes_a_ring_that_spreads_at_the_group_speed(
+    scene, stone, pond, resolution, times
+):
+    scene.render.fps = FPS
+    water = _api().add_water(scene, preset="lake", size=pond, resolution=resolution, name="Pond").object
+    centre = (0.13 * pond / 1.6, -0.07 * pond / 1.6)
+    rock = _hull(scene, "Stone", (stone, stone, stone))
+    for frame, z in ((1, 1.0), (13, -0.5)):  # it falls through the surface at about frame 9
+        rock.location = (*centre, z)
+        rock.keyframe_insert("location", frame=frame)
+    _linear(rock)
+    _api().add_wake_source(rock, water)
+    entered = 1 + 12 * (1.0 / 1.5)  # the frame its origin crosses z = 0
+    wavelength = 2.0 * stone
+    radii = []
+    for seconds in times:
+        frame = int(round(entered + seconds * FPS))
+        _step(scene, frame)
+        points, _foam = _surface(water)
+        r = np.linalg.norm(points[:, :2] - centre, axis=1)
+        width = wavelength / 4.0
+        bins = np.arange(0.0, pond / 2.0, width)
+        which = np.digitize(r, bins)
+        rms = [
+            np.sqrt(np.mean(points[which == i, 2] ** 2)) if (which == i).any() else 0.0
+            for i in range(1, len(bins))
+        ]
+        radii.append((bins[int(np.argmax(rms))] + width / 2.0, (frame - entered) / FPS))
+    (r1, t1), (r2, t2) = radii
+    k = 2.0 * math.pi / wavelength
+    sigma = 7.3e-5
+    omega = math.sqrt(G * k + sigma * k**3)
+    group = (G + 3.0 * sigma * k**2) / (2.0 * omega)
+    speed = (r2 - r1) / (t2 - t1)
+    print("ring radii", radii, "speed", round(speed, 3), "group speed", round(group, 3))
+    assert abs(speed - group) < 0.2 * group
