@@ -190,18 +190,20 @@ def float_on_water(
     draft: float | None = None,
     length: float | None = None,
     beam: float | None = None,
+    wake: bool = True,
 ) -> list[str]:
     """Makes `obj` ride `water` (default: the water below or above its origin) by its footprint,
     with constraints and drivers (no Python at render): its heave from the water's mean height
     under it, `draft` metres of it below the waterline (None: a third of its height), its pitch
     and roll from the plane fitted to the surface over `length` x `beam` metres (None: its
-    bounds'), less by `tilt_damping` (0..1). Floating it again takes new values and where it is
+    bounds'), less by `tilt_damping` (0..1); with `wake`, it leaves a wake as it moves (see
+    `add_wake_source`; stopping takes it off). Floating it again takes new values and where it is
     now. FloatError when there is no water or a size is out of range; returns the changes in
     words."""
     scene = scene or bpy.context.scene
     if water is None:
         water = _floating.water_below(obj, scene)
-    return _floating.float_on_water(obj, water, tilt_damping, draft, length, beam, scene)
+    return _floating.float_on_water(obj, water, tilt_damping, draft, length, beam, scene, wake)
 
 
 def stop_floating(obj: bpy.types.Object) -> list[str]:

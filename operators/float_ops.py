@@ -49,6 +49,11 @@ class OBJECT_OT_water_float(bpy.types.Operator):
     beam: _metres(
         "Beam", "Width of the footprint whose water rocks the object (0: its bounding box's)", 100.0
     )
+    wake: bpy.props.BoolProperty(
+        name="Wake",
+        description="Leave a Kelvin wake and foam on the water as it moves (Stop takes it off)",
+        default=True,
+    )
     tilt_damping: bpy.props.FloatProperty(
         name="Tilt Damping",
         description="How much less than the water the objects tilt (0: they follow the surface, "
@@ -88,6 +93,7 @@ class OBJECT_OT_water_float(bpy.types.Operator):
                     self.length or None,
                     self.beam or None,
                     context.scene,
+                    self.wake,
                 )
             except (floating.FloatError, NotEditableError) as error:
                 skipped.append(str(error))

@@ -221,8 +221,9 @@ def test_stop_a_copy_and_a_deleted_hull_leave_nothing_behind(scene, tmp_path):
     hull = _hull(scene)
     _api().float_on_water(hull, sea, draft=DRAFT)
     assert len(_rig_objects()) == 23  # anchor, pose, 21 probes
-    assert _api().stop_floating(hull) == ["'Hull' no longer floats"]
+    assert _api().stop_floating(hull) == ["'Hull' no longer floats", "'Hull' leaves no wake on 'Sea'"]
     assert _rig_objects() == [] and not hull.constraints
+    assert not harness.addon("water.wake").wake_modifiers(sea), "the wake floating added went too"
     assert hull.animation_data is None or hull.animation_data.action is None
     assert "Water Float Rigs" not in bpy.data.collections
 

@@ -83,7 +83,7 @@ def build(kind):
         )
     boat = open_box(scene, "Boat", (2.0, 1.2, 1.0))
     _keyed_moving(boat)
-    _api().float_on_water(boat, water, draft=0.5)
+    _api().float_on_water(boat, water, draft=0.5, wake=False)  # a wake needs baking to reopen
     hulls = [boat]
     if kind == "lake":
         tub = open_box(scene, "Tub", (1.2, 0.8, 0.8), colour=(0.8, 0.75, 0.1))

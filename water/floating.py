@@ -20,6 +20,8 @@ from .float_constraints import constraint as constraint_for
 from .float_rig import footprint_settings
 from .values import is_water
 
+WAKE_BY_FLOAT = "water_surface_wake_by_float"  # on the object: floating added its wake
+
 __all__ = (
     "FloatError",
     "float_on_water",
@@ -85,11 +87,14 @@ def _check_sizes(draft, length, beam):
             raise FloatError(f"The footprint's {name} must be above 0 m (leave it out to take the bounds')")
 
 
-def float_on_water(obj, water, tilt_damping=0.0, draft=None, length=None, beam=None, scene=None):
+def float_on_water(
+    obj, water, tilt_damping=0.0, draft=None, length=None, beam=None, scene=None, wake_on=True
+):
     """Makes `obj` ride `water` by its footprint: its heave from the water's mean height under it,
     `draft` metres of it below the waterline (None: a third of its height), its pitch and roll from
     the plane fitted over `length` x `beam` (None: its bounds'), damped by `tilt_damping` (0 =
-    follows fully, 1 = stays upright). Returns the changes in words."""
+    follows fully, 1 = stays upright). With `wake_on`, it leaves a wake as it moves (`wake.py`;
+    stopping takes off a wake floating added). Returns the changes in words."""
     check_editable(obj)
     if water is None or not is_water(water):
         raise FloatError(f"'{obj.name}' has no water below it to float on")
@@ -128,6 +133,9 @@ def float_on_water(obj, water, tilt_damping=0.0, draft=None, length=None, beam=N
     if order.index(tilt.name) > order.index(last.name):
         obj.constraints.move(order.index(tilt.name), order.index(last.name))
     wake.follow_again(obj)  # its wake reads the new anchor (reading `obj` would be a cycle)
+    if wake_on and not [m for m in wake.modifiers_of(obj) if m.id_data == water]:
+        changes += wake.add_wake_source(obj, water)
+        obj[WAKE_BY_FLOAT] = water.name
     return [
         f"'{obj.name}' floats on '{water.name}' (draft {settings['draft']:.3g} m, footprint "
         f"{settings['length']:.3g} x {settings['beam']:.3g} m, tilt damping {damping:g})"
@@ -160,7 +168,12 @@ def release(obj):
     if float_rig.SETTINGS_KEY in obj:
         del obj[float_rig.SETTINGS_KEY]
     wake.follow_again(obj, wakes)
-    return [f"'{obj.name}' no longer floats"] if found else []
+    changes = [f"'{obj.name}' no longer floats"] if found else []
+    if WAKE_BY_FLOAT in obj:  # the wake floating added goes with it
+        for water in {m.id_data for m in wakes if m.id_data.name == obj[WAKE_BY_FLOAT]}:
+            changes += wake.remove_wake_source(obj, water)
+        del obj[WAKE_BY_FLOAT]
+    return changes
 
 
 def stop_floating(obj):
