@@ -4,8 +4,8 @@ import bpy
 
 from ..water import floating
 from ..water.editable import NotEditableError, why_not_editable
-from ..water.values import is_water
 from . import _poll
+from ._selected import not_water, run_on_selected
 
 
 def _metres(name, description, soft_max):
@@ -13,11 +13,6 @@ def _metres(name, description, soft_max):
     return bpy.props.FloatProperty(
         name=name, description=description, default=0.0, min=0.0, soft_max=soft_max, unit="LENGTH"
     )
-
-
-def _floaters(context):
-    """The selected objects that are not water."""
-    return [obj for obj in context.selected_objects if not is_water(obj)]
 
 
 class OBJECT_OT_water_float(bpy.types.Operator):
@@ -66,7 +61,7 @@ class OBJECT_OT_water_float(bpy.types.Operator):
 
     @classmethod
     def poll(cls, context):
-        floaters = _floaters(context)
+        floaters = not_water(context)
         if not floaters:
             return _poll.refuse(cls, "Select the objects to float (and, if you like, the water)")
         for obj in floaters:
@@ -76,34 +71,21 @@ class OBJECT_OT_water_float(bpy.types.Operator):
         return True
 
     def execute(self, context):
-        chosen = [obj for obj in context.selected_objects if is_water(obj)]
-        if len(chosen) > 1:
-            self.report({"ERROR"}, "Select one water at most: the objects float on it")
-            return {"CANCELLED"}
-        depsgraph = context.evaluated_depsgraph_get()
-        done, skipped = [], []
-        for obj in _floaters(context):
-            water = chosen[0] if chosen else floating.water_below(obj, context.scene, depsgraph)
-            try:
-                done += floating.float_on_water(
-                    obj,
-                    water,
-                    self.tilt_damping,
-                    None if self.draft_from_bounds else self.draft,
-                    self.length or None,
-                    self.beam or None,
-                    context.scene,
-                    self.wake,
-                )
-            except (floating.FloatError, NotEditableError) as error:
-                skipped.append(str(error))
-        for message in skipped:
-            self.report({"WARNING"}, message)
-        if not done:
-            self.report({"ERROR"}, "Nothing floats: " + "; ".join(skipped))
-            return {"CANCELLED"}
-        self.report({"INFO"}, "; ".join(done))
-        return {"FINISHED"}
+        def act(obj, water):
+            return floating.float_on_water(
+                obj,
+                water,
+                self.tilt_damping,
+                None if self.draft_from_bounds else self.draft,
+                self.length or None,
+                self.beam or None,
+                context.scene,
+                self.wake,
+            )
+
+        return run_on_selected(
+            self, context, act, (floating.FloatError,), "Nothing floats", floating_first=False
+        )
 
 
 class OBJECT_OT_water_float_stop(bpy.types.Operator):

@@ -5,15 +5,8 @@ import bpy
 
 from ..water import keep_out
 from ..water.editable import NotEditableError
-from ..water.float_constraints import floating_on
-from ..water.floating import water_below
-from ..water.values import is_water
 from . import _poll
-
-
-def _hulls(context):
-    """The selected objects that are not water."""
-    return [obj for obj in context.selected_objects if not is_water(obj)]
+from ._selected import not_water, run_on_selected
 
 
 class OBJECT_OT_water_keep_out(bpy.types.Operator):
@@ -27,35 +20,16 @@ class OBJECT_OT_water_keep_out(bpy.types.Operator):
 
     @classmethod
     def poll(cls, context):
-        if not _hulls(context):
+        if not not_water(context):
             return _poll.refuse(
                 cls, "Select the hulls to keep the water out of (and, if you like, the water)"
             )
         return True
 
     def execute(self, context):
-        chosen = [obj for obj in context.selected_objects if is_water(obj)]
-        if len(chosen) > 1:
-            self.report({"ERROR"}, "Select one water at most: it is kept out of the other objects")
-            return {"CANCELLED"}
-        depsgraph = context.evaluated_depsgraph_get()
-        done, skipped = [], []
-        for obj in _hulls(context):
-            water = chosen[0] if chosen else floating_on(obj) or water_below(obj, context.scene, depsgraph)
-            if water is None:
-                skipped.append(f"'{obj.name}' is over no water: select the water too")
-                continue
-            try:
-                done += keep_out.keep_water_out(obj, water, depsgraph)
-            except (keep_out.KeepOutError, NotEditableError) as error:
-                skipped.append(str(error))
-        for message in skipped:
-            self.report({"WARNING"}, message)
-        if not done:
-            self.report({"ERROR"}, "No water kept out: " + "; ".join(skipped))
-            return {"CANCELLED"}
-        self.report({"INFO"}, "; ".join(done))
-        return {"FINISHED"}
+        return run_on_selected(
+            self, context, keep_out.keep_water_out, (keep_out.KeepOutError,), "No water kept out"
+        )
 
 
 class OBJECT_OT_water_let_in(bpy.types.Operator):

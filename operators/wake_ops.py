@@ -5,15 +5,8 @@ import bpy
 
 from ..water import wake
 from ..water.editable import NotEditableError
-from ..water.float_constraints import floating_on
-from ..water.floating import water_below
-from ..water.values import is_water
 from . import _poll
-
-
-def _movers(context):
-    """The selected objects that are not water."""
-    return [obj for obj in context.selected_objects if not is_water(obj)]
+from ._selected import not_water, run_on_selected
 
 
 class OBJECT_OT_water_wake_add(bpy.types.Operator):
@@ -35,33 +28,15 @@ class OBJECT_OT_water_wake_add(bpy.types.Operator):
 
     @classmethod
     def poll(cls, context):
-        if not _movers(context):
+        if not not_water(context):
             return _poll.refuse(cls, "Select the objects that leave a wake (and the water, if you like)")
         return True
 
     def execute(self, context):
-        chosen = [obj for obj in context.selected_objects if is_water(obj)]
-        if len(chosen) > 1:
-            self.report({"ERROR"}, "Select one water at most: the others leave their wake on it")
-            return {"CANCELLED"}
-        depsgraph = context.evaluated_depsgraph_get()
-        done, skipped = [], []
-        for obj in _movers(context):
-            water = chosen[0] if chosen else floating_on(obj) or water_below(obj, context.scene, depsgraph)
-            if water is None:
-                skipped.append(f"'{obj.name}' is over no water: select the water too")
-                continue
-            try:
-                done += wake.add_wake_source(obj, water, self.strength)
-            except (wake.WakeError, NotEditableError) as error:
-                skipped.append(str(error))
-        for message in skipped:
-            self.report({"WARNING"}, message)
-        if not done:
-            self.report({"ERROR"}, "No wake added: " + "; ".join(skipped))
-            return {"CANCELLED"}
-        self.report({"INFO"}, "; ".join(done))
-        return {"FINISHED"}
+        def act(obj, water):
+            return wake.add_wake_source(obj, water, self.strength)
+
+        return run_on_selected(self, context, act, (wake.WakeError,), "No wake added")
 
 
 class OBJECT_OT_water_wake_remove(bpy.types.Operator):

@@ -423,3 +423,29 @@ def test_a_stone_dropped_in_makes_a_ring_that_spreads_at_the_group_speed(
     speed = (r2 - r1) / (t2 - t1)
     print("ring radii", radii, "speed", round(speed, 3), "group speed", round(group, 3))
     assert abs(speed - group) < 0.2 * group
+
+
+def test_the_operators_and_the_panel(scene):
+    from test_repair import draw_panel
+
+    water = _api().add_water(scene, preset="lake", size=20.0, resolution=41, name="Lake").object
+    hull = _hull(scene)
+    bpy.ops.object.select_all(action="DESELECT")
+    water.select_set(True)
+    bpy.context.view_layer.objects.active = water
+    assert not bpy.ops.object.water_wake_add.poll()
+    hull.select_set(True)
+    bpy.context.view_layer.objects.active = hull
+    assert not bpy.ops.object.water_wake_remove.poll()
+    assert bpy.ops.object.water_wake_add(strength=0.5) == {"FINISHED"}
+    wake = harness.addon("water.wake")
+    (modifier,) = wake.wake_modifiers(water)
+    assert harness.addon("water.waves").get_wave_input(modifier, "Strength") == pytest.approx(0.5)
+    labels = [entry[1] for entry in draw_panel() if entry[0] == "label"]
+    assert "Leaves a wake on 'Lake'" in labels
+    assert "The wake on 'Lake' is not baked: farms render it flat" in labels
+    nodes = water.active_material.node_tree.nodes
+    assert nodes["Material Output"].inputs["Surface"].links[0].from_node.name == "Water Wake Foam"
+    assert bpy.ops.object.water_wake_remove() == {"FINISHED"}
+    assert wake.wake_modifiers(water) == [] and "Water Wake Foam" not in nodes
+    assert nodes["Material Output"].inputs["Surface"].links[0].from_node.name == "Water Surface"

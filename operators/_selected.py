@@ -1,0 +1,42 @@
+"""What the object operators (float, keep water out, wake) share: the selected objects that are
+not water, the water each one acts on, and one report for all of them."""
+
+from ..water.editable import NotEditableError
+from ..water.float_constraints import floating_on
+from ..water.floating import water_below
+from ..water.values import is_water
+
+
+def not_water(context):
+    """The selected objects that are not water."""
+    return [obj for obj in context.selected_objects if not is_water(obj)]
+
+
+def run_on_selected(operator, context, act, errors, nothing, floating_first=True):
+    """Calls `act(obj, water)` for each selected object that is not water, on the one selected
+    water, else the water it floats on (`floating_first`), else the water straight below or above
+    it; `errors` (exception types) become warnings, and the operator is cancelled, saying
+    `nothing` and why, when no object was done. Returns the operator's result."""
+    chosen = [obj for obj in context.selected_objects if is_water(obj)]
+    if len(chosen) > 1:
+        operator.report({"ERROR"}, "Select one water at most: the other objects act on it")
+        return {"CANCELLED"}
+    depsgraph = context.evaluated_depsgraph_get()
+    done, skipped = [], []
+    for obj in not_water(context):
+        water = chosen[0] if chosen else (floating_on(obj) if floating_first else None)
+        water = water or water_below(obj, context.scene, depsgraph)
+        if water is None:
+            skipped.append(f"'{obj.name}' is over no water: select the water too")
+            continue
+        try:
+            done += act(obj, water)
+        except (*errors, NotEditableError) as error:
+            skipped.append(str(error))
+    for message in skipped:
+        operator.report({"WARNING"}, message)
+    if not done:
+        operator.report({"ERROR"}, f"{nothing}: " + "; ".join(skipped))
+        return {"CANCELLED"}
+    operator.report({"INFO"}, "; ".join(done))
+    return {"FINISHED"}
