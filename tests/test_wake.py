@@ -449,3 +449,23 @@ def test_the_operators_and_the_panel(scene):
     assert bpy.ops.object.water_wake_remove() == {"FINISHED"}
     assert wake.wake_modifiers(water) == [] and "Water Wake Foam" not in nodes
     assert nodes["Material Output"].inputs["Surface"].links[0].from_node.name == "Water Surface"
+
+
+def test_a_dry_hull_stays_dry_under_its_own_foam_whichever_came_first(scene):
+    keep_out = harness.addon("water.keep_out")
+    for first in ("keep out", "wake"):
+        water = _api().add_water(scene, preset="lake", size=20.0, resolution=41, name=f"Lake {first}").object
+        hull = _hull(scene, f"Hull {first}")
+        steps = [lambda: _api().keep_water_out(hull, water), lambda: _api().add_wake_source(hull, water)]
+        for step in steps if first == "keep out" else steps[::-1]:
+            step()
+        nodes = water.active_material.node_tree.nodes
+        surface = nodes["Material Output"].inputs["Surface"]
+        outer = surface.links[0].from_node
+        inner = outer.inputs[1].links[0].from_node
+        assert (outer.name, inner.name) == (keep_out.MIX_NODE, "Water Wake Foam"), first
+        assert inner.inputs[1].links[0].from_node.name == "Water Surface"
+        assert keep_out.water_shader_input(water.active_material) == inner.inputs[1]
+        _api().let_water_in(hull)
+        _api().remove_wake_source(hull)
+        assert surface.links[0].from_node.name == "Water Surface"
