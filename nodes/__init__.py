@@ -30,6 +30,7 @@ SPECS = {
         surroundings.SPEC,
         surroundings.SAMPLE_SPEC,
         keep_out.SPEC,
+        wake.SPEC,
     )
 }
 
