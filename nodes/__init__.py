@@ -11,6 +11,7 @@ from . import (
     ocean,
     sea_fade,
     surroundings,
+    wake,
     water_surface,
     water_waves,
     wind_frame,
