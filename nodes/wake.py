@@ -14,8 +14,9 @@ object's frame when `k = g / (U² cos² θ)`; at `tan α = y / x` those that rea
 smaller where it is short beside the hull (`exp(-0.05 k L)`) or shorter than four mesh cells
 (`Detail`); the two grow where they meet at the wedge's arms (the cusp) and fade just beyond
 it (the stationary-phase weight `s^(-1/2)` near the arms, `s = sqrt(1 - 8 tan² α)`, is
-taken as `(s² + 0.01)^(-1/3)`: finite, and highest on the arms, as the Airy function there is).
-The height scales as `Strength x Draft x Fr²` (`Fr = U / sqrt(g L)`), falls as
+taken as `(s² + 0.01)^(-1/3)`, scaled to 1 there: finite, and highest on the arms, as the Airy
+function there is). The height scales as `Strength x Draft x Fr²` (`Fr = U / sqrt(g L)`, its
+square at most 0.25: faster hulls' waves break rather than grow), falls as
 `sqrt(L / (L + r))` with distance and `exp(-age / Fade)` with time.
 
 Rings: where the object's origin crosses the water's rest level downwards, a ring: waves twice
@@ -475,13 +476,15 @@ def _kelvin_nodes():
         "four_cells": math("MULTIPLY", 22, "4 cells", b=4.0),
         "sum": math("ADD", 40, "both waves"),
         "cusp_base": math("ADD", 28, "s² + 0.01", b=0.01),
-        "cusp": math("POWER", 29, "higher at the arms", b=-1.0 / 3.0),
+        "cusp_raw": math("POWER", 29, "higher at the arms", b=-1.0 / 3.0),
+        "cusp": math("MULTIPLY", 30, "1 on the arms", b=0.01 ** (1.0 / 3.0)),
         "beyond": math("MINIMUM", 27, "how far outside (< 0)", b=0.0),
         "beyond_s": math("DIVIDE", 28, "/ 0.04", b=0.04),
         "outside": math("EXPONENT", 29, "fades just beyond the arms"),
         "fr2": math("DIVIDE", 24, "Fr² = U² / (g L)"),
         "gl": math("MULTIPLY", 23, "g L", a=G),
-        "height": math("MULTIPLY", 25, "Draft x Fr²"),
+        "fr2_cap": math("MINIMUM", 25, "Fr² up to 0.25: waves break beyond", b=0.25),
+        "height": math("MULTIPLY", 26, "Draft x Fr²"),
         "strength": math("MULTIPLY", 26, "x Strength"),
         "r2_x": math("MULTIPLY", 23, "x²"),
         "r2": math("MULTIPLY_ADD", 24, "x² + y²"),
@@ -555,7 +558,8 @@ def _kelvin_nodes():
         ("t_term:Value", "sum:#0"),
         ("d_term:Value", "sum:#1"),
         ("disc_in:Value", "cusp_base:#0"),
-        ("cusp_base:Value", "cusp:#0"),
+        ("cusp_base:Value", "cusp_raw:#0"),
+        ("cusp_raw:Value", "cusp:#0"),
         ("disc:Value", "beyond:#0"),
         ("beyond:Value", "beyond_s:#0"),
         ("beyond_s:Value", "outside:#0"),
@@ -563,7 +567,8 @@ def _kelvin_nodes():
         ("u2:Value", "fr2:#0"),
         ("gl:Value", "fr2:#1"),
         ("input:Draft", "height:#0"),
-        ("fr2:Value", "height:#1"),
+        ("fr2:Value", "fr2_cap:#0"),
+        ("fr2_cap:Value", "height:#1"),
         ("height:Value", "strength:#0"),
         ("input:Strength", "strength:#1"),
         ("x:Value", "r2_x:#0"),
