@@ -469,3 +469,14 @@ def test_a_dry_hull_stays_dry_under_its_own_foam_whichever_came_first(scene):
         _api().let_water_in(hull)
         _api().remove_wake_source(hull)
         assert surface.links[0].from_node.name == "Water Surface"
+
+
+def test_rendering_a_file_with_an_unbaked_wake_says_so(scene, tmp_path):
+    water = _api().add_water(scene, preset="lake", size=20.0, resolution=41, name="Lake").object
+    harness.add_camera(scene, (0.0, -10.0, 6.0), (0.0, 0.0, 0.0))
+    _api().add_wake_source(_hull(scene), water)
+    source = tmp_path / "unbaked.blend"
+    bpy.ops.wm.save_as_mainfile(filepath=str(source))
+    said = []
+    _api().render_file(str(source), str(tmp_path / "frame.png"), progress=said.append)
+    assert any("the wake on 'Lake' is not baked" in line for line in said), said

@@ -46,6 +46,7 @@ from pathlib import Path
 import bpy
 
 from ..presets import PresetError
+from . import wake
 from .plane import AddWaterError, add_water, resolve_values
 
 IMAGE_FORMATS = {".png": "PNG", ".exr": "OPEN_EXR", ".jpg": "JPEG", ".jpeg": "JPEG", ".tif": "TIFF"}
@@ -335,6 +336,11 @@ def render_file(
         scene.cycles.samples = samples
     scene.render.image_settings.file_format = file_format
     scene.render.use_file_extension = False
+    for water in [obj for obj in scene.objects if wake.unbaked(obj)]:
+        progress(
+            f"water_surface: the wake on '{water.name}' is not baked: a frame rendered on its own "
+            "shows it flat (bake it first: Bake Wake, or api.bake)"
+        )
     if not frames:
         if frame is not None:
             scene.frame_set(frame)
