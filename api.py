@@ -251,10 +251,11 @@ def remove_wake_source(obj: bpy.types.Object, water: bpy.types.Object | None = N
 
 
 def bake(water: bpy.types.Object, scene: bpy.types.Scene | None = None) -> list[str]:
-    """Bakes the wakes of `water` over the scene's frame range into the .blend (4.3 and later), so
-    frames rendered apart (a farm) equal one run from the start; bake again after changing the
-    moving objects' animation. WakeError on 4.2 (bake from the modifier's panel to a folder) or
-    with no wake; returns the changes in words."""
+    """Bakes the wakes of `water` over the scene's frame range, so frames rendered apart (a farm)
+    equal one run from the start: packed into the .blend from 4.3; on 4.2 into the folder
+    "//<file>_water_bakes" beside the saved .blend (save first). Bake again after changing the
+    moving objects' animation. WakeError with no wake or, on 4.2, an unsaved file; returns the
+    changes in words."""
     return _wake.bake(water, scene or bpy.context.scene)
 
 

@@ -13,6 +13,8 @@ unlit white foam (an Emission), put where the water's shader feeds the output (i
 a dry hull stays dry): the lake and the ocean shading alike.
 """
 
+import os
+
 import bpy
 import numpy as np
 
@@ -271,20 +273,24 @@ def unbaked(water):
     return [m for m in wake_modifiers(water) if m.name not in _baked_names(water)]
 
 
+def bake_folder():
+    """Where 4.2 writes wake bakes: a folder beside the saved .blend, relative to it (so the file
+    and the folder move together, and BAT packs it)."""
+    name = os.path.splitext(bpy.path.basename(bpy.data.filepath))[0] or "untitled"
+    return f"//{name}_water_bakes"
+
+
 def bake(water, scene):
-    """Bakes the wakes of `water` over `scene`'s frame range, packed into the .blend (4.3 and
-    later): frames rendered apart, on a farm, equal one run from the start. Returns the changes."""
+    """Bakes the wakes of `water` over `scene`'s frame range: packed into the .blend from 4.3, into
+    `bake_folder()` beside the saved .blend on 4.2. Frames rendered apart, on a farm, then equal
+    one run from the start. Returns the changes."""
     modifiers = wake_modifiers(water)
     if not modifiers:
         raise WakeError(f"'{water.name}' has no wake to bake")
-    if bpy.app.version < PACKED_BAKES_SINCE:
-        raise WakeError(
-            "Blender 4.2 bakes to a folder beside the saved .blend: bake from the modifier's "
-            "Physics > Simulation Nodes panel (Bake); 4.3 and later pack it into the file"
-        )
+    packed = bpy.app.version >= PACKED_BAKES_SINCE
+    if not packed and not bpy.data.filepath:
+        raise WakeError("Save the file first: Blender 4.2 bakes to a folder beside the .blend")
     check_editable(water)
-    for modifier in modifiers:
-        modifier.bake_target = "PACKED"
     override = {
         "scene": scene,
         "object": water,
@@ -292,14 +298,21 @@ def bake(water, scene):
         "selected_objects": [water],
         "selected_editable_objects": [water],
     }
-    with bpy.context.temp_override(**override):
-        result = bpy.ops.object.simulation_nodes_cache_bake(selected=True)
-    if "FINISHED" not in result:
-        raise WakeError(f"Baking the wake of '{water.name}' failed")
+    for modifier in modifiers:
+        if packed:
+            modifier.bake_target = "PACKED"
+        else:
+            modifier.bake_directory = bake_folder()
+        for each in modifier.bakes:
+            with bpy.context.temp_override(**override):
+                result = bpy.ops.object.geometry_node_bake_single(
+                    session_uid=water.session_uid, modifier_name=modifier.name, bake_id=each.bake_id
+                )
+            if "FINISHED" not in result:
+                raise WakeError(f"Baking the wake of '{water.name}' failed")
     water[BAKED_KEY] = [m.name for m in modifiers]
-    return [
-        f"baked the wake of '{water.name}', frames {scene.frame_start} to {scene.frame_end}, into the file"
-    ]
+    where = "into the file" if packed else f"to {bake_folder()}"
+    return [f"baked the wake of '{water.name}', frames {scene.frame_start} to {scene.frame_end}, {where}"]
 
 
 def free_bake(water, scene):
