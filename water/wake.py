@@ -27,7 +27,7 @@ from .editable import check_editable
 from .float_constraints import pose_of
 from .float_rig import OWNER_KEY, anchor_of, footprint_of, footprint_settings
 from .values import is_water, read_values, water_material
-from .waves import SURROUNDINGS_ROLE, input_ids, set_wave_input
+from .waves import SURROUNDINGS_ROLE, get_wave_input, set_wave_input
 
 FOAM_MIX = "Water Wake Foam"
 FOAM_SHADER = "Water Wake Foam Shader"
@@ -50,17 +50,9 @@ def wake_modifiers(water):
     ]
 
 
-def _source_input(modifier):
-    identifier = input_ids(modifier).get("Source")
-    interface = getattr(modifier, "properties", None)
-    if interface is not None and hasattr(interface, "inputs"):
-        return getattr(interface.inputs, identifier).value
-    return modifier.get(identifier)
-
-
 def source_of(modifier):
     """The object a wake modifier follows (a floating object, not its anchor), or None."""
-    source = _source_input(modifier)
+    source = get_wave_input(modifier, "Source")
     if source is None:
         return None
     owner = source.get(OWNER_KEY) if hasattr(source, "get") else None
@@ -313,12 +305,3 @@ def bake(water, scene):
     water[BAKED_KEY] = [m.name for m in modifiers]
     where = "into the file" if packed else f"to {bake_folder()}"
     return [f"baked the wake of '{water.name}', frames {scene.frame_start} to {scene.frame_end}, {where}"]
-
-
-def free_bake(water, scene):
-    """Frees the wakes' bakes of `water` (they simulate again from the start)."""
-    override = {"scene": scene, "object": water, "active_object": water, "selected_objects": [water]}
-    with bpy.context.temp_override(**override):
-        bpy.ops.object.simulation_nodes_cache_delete(selected=True)
-    water.pop(BAKED_KEY, None)
-    return [f"freed the wake's bake of '{water.name}'"]
