@@ -18,7 +18,7 @@ def _metres(name, description, soft_max):
 class OBJECT_OT_water_float(bpy.types.Operator):
     """Make the selected objects float on the water below them (or on the selected water): each
     rides the water under its whole footprint (heave, pitch and roll), at its draft, with
-    constraints and drivers (no scripts at render)"""
+    constraints and drivers (no scripts at render), and with Wake leaves a wake as it moves"""
 
     bl_idname = "object.water_float"
     bl_label = "Float on Water"
