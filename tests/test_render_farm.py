@@ -71,34 +71,10 @@ def _work(*args):
     assert done.returncode == 0, done.stdout[-2000:] + done.stderr[-2000:]
 
 
-def _bat(*args):
-    """Runs BAT's own command line (`bat ARGS`) in a fresh process; returns its exit status and output.
-
-    BAT 2 works inside Blender through bpy (here the bpy module, with no add-on installed);
-    BAT 1 (Python 3.11, Blender 4.x) reads the file itself.
-    """
-    code = (  # BAT 2 reads its arguments after "--", as in `blender -b --python-expr ... -- pack ...`
-        "import sys; args = sys.argv[1:]; import bpy, blender_asset_tracer as bat; "
-        "sys.argv = ['bat', *([] if bat.__version__.startswith('1.') else ['--']), *args]; "
-        "from blender_asset_tracer import cli; cli.cli_main()"
-    )
-    env = {**os.environ}
-    env.pop("BLENDER_USER_RESOURCES", None)
-    done = subprocess.run(
-        [sys.executable, "-c", code, *map(str, args)],
-        capture_output=True,
-        text=True,
-        env=env,
-        timeout=600,
-        check=False,
-    )
-    return done.returncode, done.stdout + done.stderr
-
-
 @pytest.mark.lts
 def test_bat_finds_nothing_outside_or_missing_and_its_pack_renders_the_same(shot, tmp_path):
     target = tmp_path / "packed"
-    status, output = _bat("pack", shot["path"], target)
+    status, output = harness.bat("pack", shot["path"], target)
     assert status in (0, None), output
     assert "missing" not in output.lower(), output
     packed = sorted(p.relative_to(target).as_posix() for p in target.rglob("*") if p.is_file())

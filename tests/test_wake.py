@@ -17,7 +17,8 @@ to 145, stepped in order as a render does), the evaluated mesh is read in the tr
   the group speed of waves twice its width long, `ω² = g k + (σ/ρ) k³`, within 20%: 0.6 m waves
   (gravity's) and 1.6 cm ones (near the capillary minimum, on a 1 m pond meshed at 2.5 mm).
 * Floating and stopping re-point the wake with no dependency cycle; a deleted hull's wake goes
-  at save; a baked wake renders any frame alone, without the add-on, as the stepped run.
+  at save; a baked wake renders any frame alone, without the add-on, as the stepped run, also
+  from BAT's pack of the file (on 4.2 the pack holds the bake's folder).
 """
 
 import math
@@ -376,7 +377,19 @@ def test_a_baked_wake_renders_any_frame_alone_without_the_add_on(scene, tmp_path
     if bpy.app.version < (4, 3, 0):
         assert list((tmp_path / "baked_water_bakes").rglob("*.blob")), "the bake's folder beside it"
     bpy.ops.wm.save_mainfile()
-    scene = harness.reopen_without_add_on(path)
+    packed = tmp_path / "packed"  # as a farm gets it: BAT's pack, the original moved away
+    status, output = harness.bat("pack", path, packed)
+    assert status in (0, None), output
+    files = [p.relative_to(packed).as_posix() for p in packed.rglob("*") if p.is_file()]
+    blobs = [p for p in files if p.endswith(".blob")]
+    if bpy.app.version < (4, 3, 0):
+        assert blobs and all(p.startswith("baked_water_bakes/") for p in blobs), files
+    else:
+        assert not blobs, f"packed into the .blend, nothing beside it: {files}"
+    path.rename(tmp_path / "moved.blend")
+    if (tmp_path / "baked_water_bakes").exists():
+        (tmp_path / "baked_water_bakes").rename(tmp_path / "moved_bakes")
+    scene = harness.reopen_without_add_on(packed / "baked.blend")
     scene.frame_set(40)  # straight to the last frame, as a farm's worker does
     points, foam = _surface(bpy.data.objects["Lake"])
     assert np.abs(points - stepped[0]).max() < 1e-5

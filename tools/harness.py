@@ -315,3 +315,27 @@ def reopen_without_add_on(path):
     bpy.context.preferences.filepaths.use_scripts_auto_execute = False
     bpy.ops.wm.open_mainfile(filepath=str(path), load_ui=False, use_scripts=False)
     return bpy.context.scene
+
+
+def bat(*args):
+    """Runs BAT's own command line (`bat ARGS`) in a fresh process; returns its exit status and output.
+
+    BAT 2 works inside Blender through bpy (here the bpy module, with no add-on installed);
+    BAT 1 (Python 3.11, Blender 4.x) reads the file itself.
+    """
+    code = (  # BAT 2 reads its arguments after "--", as in `blender -b --python-expr ... -- pack ...`
+        "import sys; args = sys.argv[1:]; import bpy, blender_asset_tracer as bat; "
+        "sys.argv = ['bat', *([] if bat.__version__.startswith('1.') else ['--']), *args]; "
+        "from blender_asset_tracer import cli; cli.cli_main()"
+    )
+    env = {**os.environ}
+    env.pop("BLENDER_USER_RESOURCES", None)
+    done = subprocess.run(
+        [sys.executable, "-c", code, *map(str, args)],
+        capture_output=True,
+        text=True,
+        env=env,
+        timeout=600,
+        check=False,
+    )
+    return done.returncode, done.stdout + done.stderr
