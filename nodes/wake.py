@@ -222,7 +222,9 @@ def _ring_nodes():
         "ring_a4": math("MULTIPLY", 39, ""),
         "ring_a5": math("MULTIPLY", 40, "x Strength"),
         # A switch on one value: with no ring, the ring's field is never evaluated.
-        "ring": Node("GeometryNodeSwitch", 41, {"input_type": "FLOAT"}, {"False": 0.0}, "ring height, if any"),
+        "ring": Node(
+            "GeometryNodeSwitch", 41, {"input_type": "FLOAT"}, {"False": 0.0}, "ring height, if any"
+        ),
         "total": math("ADD", 47, "wake + ring"),
     }
     links = (
