@@ -12,7 +12,8 @@ to 145, stepped in order as a render does), the evaluated mesh is read in the tr
   crossings of zero between 3 and 15 m behind.
 * Heights: twice the draft, twice the height; a slower hull, lower waves; lower further behind.
 * Foam round the hull and along the track behind it, drifted downwind, none ahead of it.
-* A turning hull: the foam lies along the bend it took, not along its heading now.
+* A turning hull: the foam lies along the bend it took, not along its heading now; the wake,
+  worked out only in its zone round the track, is the same as worked out everywhere.
 * A stone dropped in: its ring's front (the radius where the waves are highest) runs out at
   the group speed of waves twice its width long, `ω² = g k + (σ/ρ) k³`, within 20%: 0.6 m waves
   (gravity's) and 1.6 cm ones (near the capillary minimum, on a 1 m pond meshed at 2.5 mm).
@@ -280,6 +281,41 @@ def test_a_turning_hull_leaves_its_foam_along_the_bend(addon, eevee):
     print("foam on the bend", foam_near(on_bend), "straight back", foam_near(straight_back))
     assert foam_near(on_bend) > 0.2
     assert foam_near(straight_back) < 0.02
+
+
+def test_the_wake_worked_out_only_round_its_track_equals_it_worked_out_everywhere(addon):
+    """The wake is worked out only in a zone round its track (the wedge round the chord from
+    the object back to the oldest point, wider by how far the track strays): on a long S-bend at
+    6 m/s, 48 m in 8 s, a copy of the group with no selections gives the same water."""
+    scene = harness.clean_scene(width=32, height=32, samples=1)
+    scene.render.fps = FPS
+    water = _api().add_water(scene, preset="lake", size=80.0, resolution=161, name="Lake").object
+    hull = _hull(scene)
+    last = 8 * FPS + 1
+    for frame in range(1, last + 1, 6):
+        seconds = (frame - 1) / FPS
+        heading = 0.9 * math.sin(seconds * math.pi / 4.0)  # an S: left, then right
+        along = -30.0 + 6.0 * seconds
+        hull.location = (along * math.cos(0.5), along * math.sin(0.5) + 6.0 * math.sin(heading), 0.0)
+        hull.keyframe_insert("location", frame=frame)
+    _api().add_wake_source(hull, water)
+    _step(scene, last)
+    points, foam = _surface(water)
+    (modifier,) = harness.addon("water.wake").wake_modifiers(water)
+    group = modifier.node_group.copy()
+    for node in group.nodes:
+        if node.label in ("the wake", "store water_wake_foam"):
+            for link in list(node.inputs["Selection"].links):
+                group.links.remove(link)
+    modifier.node_group = group
+    _step(scene, last)
+    everywhere, foam_everywhere = _surface(water)
+    moved = np.abs(everywhere[:, 2]) > 0.002
+    print("height", np.abs(everywhere[:, 2]).max(), "points moved", moved.sum(), "of", len(moved))
+    print("culled off by", np.abs(everywhere - points).max(), "foam", np.abs(foam_everywhere - foam).max())
+    assert np.abs(everywhere[:, 2]).max() > 0.05
+    assert np.abs(everywhere - points).max() < 0.002
+    assert np.abs(foam_everywhere - foam).max() < 0.01
 
 
 @pytest.mark.render
