@@ -555,8 +555,9 @@ FULL_SHADE_SPEC = GroupSpec(
     name=SHADE_NAME,
     # 2: whitecaps; 3: depth colour, shore foam and caustics from the surroundings; 4: the traced
     # sky and the debug views; 5: whitecaps broken up by the foam tile, as the shore's foam; 6: the
-    # caustics an optional part (`PARTS`: older groups have them built in, `retire_legacy_shades`)
-    version=6,
+    # caustics an optional part (`PARTS`: older groups have them built in, `retire_legacy_shades`);
+    # 7: seen from below, Snell's window (it was clear)
+    version=7,
     description="Ocean colour: deep blue and the reflected sky by the ocean Fresnel, plus the glint; "
     "white lit foam on the crests; with the surroundings, the bed seen through shallow water, "
     "shore foam and caustics",
@@ -663,9 +664,34 @@ FULL_SHADE_SPEC = GroupSpec(
             before=water_surface.LIT_FOAM_SINCE,
         ),
         "mix": Node("ShaderNodeMixShader", 32, label="water or foam"),
-        # Seen from below (by the bed's light bounces in Cycles), the water lets everything through:
-        # its unlit colour is what the eye sees from above, not a lamp over the bed.
-        "see_through": Node("ShaderNodeBsdfTransparent", 32, label="from below: clear"),
+        # Seen from below, physics alone (its unlit colour is what the eye sees from above, not a
+        # lamp over the bed): the sky refracted inside Snell's window, the water below reflected
+        # outside it. The Fresnel node takes 1 / IOR on a backface and gives 1 past the critical
+        # angle (total internal reflection).
+        "under_fresnel": Node(
+            "ShaderNodeFresnel", 30, values={"IOR": water_surface.IOR}, label="Fresnel from below"
+        ),
+        "under_clear": math("SUBTRACT", 31, "1 - that", a=1.0),
+        # The normal, turned to face the eye (a mesh's own normal comes turned on a backface, the
+        # waves' worked-out one does not).
+        "under_facing": vmath("DOT_PRODUCT", 28, "eye . n"),
+        "under_sign": math("SIGN", 29, "its sign"),
+        "under_normal": vmath("SCALE", 29, "n, facing the eye"),
+        "under_mirror": Node(
+            "ShaderNodeBsdfAnisotropic",
+            31,
+            {"distribution": "GGX"},
+            {"Roughness": 0.0},
+            label="from below: the water reflected",
+        ),
+        "under_sky": Node(
+            "ShaderNodeBsdfRefraction",
+            31,
+            {"distribution": "GGX"},
+            {"Roughness": 0.0, "IOR": water_surface.IOR},
+            label="from below: the sky refracted",
+        ),
+        "see_through": Node("ShaderNodeAddShader", 32, label="from below"),
         "sides": Node("ShaderNodeMixShader", 33, label="above or below"),
         **_DEBUG_NODES,
     },
@@ -750,7 +776,20 @@ FULL_SHADE_SPEC = GroupSpec(
         ("foam_glow:Emission", "mix:#2"),
         ("geometry:Backfacing", "sides:Fac"),
         ("mix:Shader", "sides:#1"),
-        ("see_through:BSDF", "sides:#2"),
+        ("geometry:Incoming", "under_facing:#0"),
+        ("input:Normal", "under_facing:#1"),
+        ("under_facing:Value", "under_sign:#0"),
+        ("input:Normal", "under_normal:#0"),
+        ("under_sign:Value", "under_normal:Scale"),
+        ("under_normal:Vector", "under_fresnel:Normal"),
+        ("under_fresnel:Fac", "under_clear:#1"),
+        ("under_fresnel:Fac", "under_mirror:Color"),
+        ("under_normal:Vector", "under_mirror:Normal"),
+        ("under_clear:Value", "under_sky:Color"),
+        ("under_normal:Vector", "under_sky:Normal"),
+        ("under_mirror:BSDF", "see_through:#0"),
+        ("under_sky:BSDF", "see_through:#1"),
+        ("see_through:Shader", "sides:#2"),
         *_DEBUG_LINKS,
     ),
 )

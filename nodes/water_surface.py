@@ -71,7 +71,8 @@ from .spec import (
 )
 
 NAME = "Water Surface"
-VERSION = 5  # 4: caustics; 5: depth colour, foam and caustics only in the variants that use them
+VERSION = 6  # 4: caustics; 5: depth colour, foam and caustics only in the variants that use them;
+# 6: the underside (Snell's window)
 LIT_FOAM_SINCE = (4, 5, 0)  # the first LTS whose EEVEE keeps traced refraction beside a diffuse closure
 MAX_BUMP_LAYERS = 4
 FOAM_NAME = "Water Surface Foam Coverage"
@@ -314,6 +315,22 @@ def _weight_nodes():
         "e_transmit": vmath("MULTIPLY_ADD", 24, "+ T if view 6"),
         "e_foam": vmath("MULTIPLY_ADD", 24, "+ foam if view 7"),
         "e_caustics": vmath("MULTIPLY_ADD", 25, "+ caustics if view 8"),
+        # From below (a backface): physics alone. The Fresnel node takes 1 / IOR on a backface
+        # and gives 1 past the critical angle (total internal reflection), so the refraction shows
+        # the sky inside Snell's window and the reflection the water below outside it; no dull
+        # colour, glint or colour by depth (they are the view from above).
+        "fresnel_in": Node("ShaderNodeFresnel", 21, values={"IOR": 1.33}, label="Fresnel from below"),
+        "under_reflect": math("MULTIPLY", 22, "from below: reflection"),
+        "under_clear": math("SUBTRACT", 22, "1 - that", a=1.0),
+        "under_refract": math("MULTIPLY", 23, "from below: refraction"),
+        "w_reflect_s": Node(
+            "ShaderNodeMix", 24, {"data_type": "FLOAT"}, label="reflection weight, either side"
+        ),
+        "refract_s": Node(
+            "ShaderNodeMix", 24, {"data_type": "VECTOR"}, label="refraction colour, either side"
+        ),
+        "above": math("SUBTRACT", 25, "1 on the top side", a=1.0),
+        "e_above": vmath("SCALE", 26, "emission from above only"),
     }
     links += [
         (previous, "is_final:#1"),
@@ -363,6 +380,21 @@ def _weight_nodes():
         ("caustics:Factor", "e_caustics:#0"),
         ("is_8:Value", "e_caustics:#1"),
         ("e_foam:Vector", "e_caustics:#2"),
+        ("normal_h:Normal", "fresnel_in:Normal"),
+        ("fresnel_in:Fac", "under_reflect:#0"),
+        ("final_share:Value", "under_reflect:#1"),
+        ("fresnel_in:Fac", "under_clear:#1"),
+        ("under_clear:Value", "under_refract:#0"),
+        ("final_share:Value", "under_refract:#1"),
+        ("geometry:Backfacing", "w_reflect_s:Factor"),
+        ("w_reflect:Value", "w_reflect_s:A"),
+        ("under_reflect:Value", "w_reflect_s:B"),
+        ("geometry:Backfacing", "refract_s:Factor"),
+        ("refract_color:Vector", "refract_s:A"),
+        ("under_refract:Value", "refract_s:B"),
+        ("geometry:Backfacing", "above:#1"),
+        ("e_caustics:Vector", "e_above:#0"),
+        ("above:Value", "e_above:Scale"),
     ]
     return nodes, links
 
@@ -697,11 +729,11 @@ FULL_SPEC = GroupSpec(
         *_WEIGHT_LINKS,
         ("normal_h:Normal", "glossy:Normal"),
         ("normal_h:Normal", "refraction:Normal"),
-        ("w_reflect:Value", "glossy:Color"),
-        ("refract_color:Vector", "refraction:Color"),
-        ("e_caustics:Vector", "emission:Color"),
+        ("w_reflect_s:Result", "glossy:Color"),
+        ("refract_s:Result", "refraction:Color"),
+        ("e_above:Vector", "emission:Color"),
         # Before 4.5 (no diffuse closure) the emission carries the foam too: this replaces the link above.
-        ("e_caustics:Vector", "foam_glow:#0"),
+        ("e_above:Vector", "foam_glow:#0"),
         ("foam_weight:Value", "foam_glow:#1"),
         ("foam_glow:Vector", "emission:Color"),
         ("foam_weight:Value", "foam_bsdf:Color"),
