@@ -664,10 +664,12 @@ FULL_SHADE_SPEC = GroupSpec(
             before=water_surface.LIT_FOAM_SINCE,
         ),
         "mix": Node("ShaderNodeMixShader", 32, label="water or foam"),
-        # Seen from below, physics alone (its unlit colour is what the eye sees from above, not a
-        # lamp over the bed): the sky refracted inside Snell's window, the water below reflected
-        # outside it. The Fresnel node takes 1 / IOR on a backface and gives 1 past the critical
-        # angle (total internal reflection).
+        # Seen from below by the camera, physics alone (its unlit colour is what the eye sees from
+        # above, not a lamp over the bed): the sky refracted inside Snell's window, the water below
+        # reflected outside it. The Fresnel node takes 1 / IOR on a backface and gives 1 past the
+        # critical angle (total internal reflection). To every other ray (the bed's light bounces
+        # in Cycles) it stays clear, as EEVEE lights the bed: the two engines show the same
+        # shallows.
         "under_fresnel": Node(
             "ShaderNodeFresnel", 30, values={"IOR": water_surface.IOR}, label="Fresnel from below"
         ),
@@ -692,6 +694,9 @@ FULL_SHADE_SPEC = GroupSpec(
             label="from below: the sky refracted",
         ),
         "see_through": Node("ShaderNodeAddShader", 32, label="from below"),
+        "light_path": Node("ShaderNodeLightPath", 31),
+        "clear": Node("ShaderNodeBsdfTransparent", 32, label="from below, to other rays: clear"),
+        "under_camera": Node("ShaderNodeMixShader", 33, label="the camera's view, or clear"),
         "sides": Node("ShaderNodeMixShader", 33, label="above or below"),
         **_DEBUG_NODES,
     },
@@ -789,7 +794,10 @@ FULL_SHADE_SPEC = GroupSpec(
         ("under_normal:Vector", "under_sky:Normal"),
         ("under_mirror:BSDF", "see_through:#0"),
         ("under_sky:BSDF", "see_through:#1"),
-        ("see_through:Shader", "sides:#2"),
+        ("light_path:Is Camera Ray", "under_camera:Fac"),
+        ("clear:BSDF", "under_camera:#1"),
+        ("see_through:Shader", "under_camera:#2"),
+        ("under_camera:Shader", "sides:#2"),
         *_DEBUG_LINKS,
     ),
 )

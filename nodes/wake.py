@@ -51,6 +51,27 @@ def _store(name, data_type, column):
     )
 
 
+def _box_test(keys, column, box):
+    """Three nodes (keys: above, below, both): a point above a box's low corner and below its
+    high corner, each axis at once (A: the point, B: the corner; "both:Boolean" the answer)."""
+    above, below, both = keys
+    return {
+        above: Node(
+            "FunctionNodeCompare",
+            column,
+            {"data_type": "VECTOR", "mode": "ELEMENT", "operation": "GREATER_THAN"},
+            label=f"above {box}'s low corner",
+        ),
+        below: Node(
+            "FunctionNodeCompare",
+            column,
+            {"data_type": "VECTOR", "mode": "ELEMENT", "operation": "LESS_THAN"},
+            label=f"below {box}'s high corner",
+        ),
+        both: Node("FunctionNodeBooleanMath", column + 1, {"operation": "AND"}, label=f"inside {box}"),
+    }
+
+
 def _sample(data_type, column, label):
     return Node("GeometryNodeSampleIndex", column, {"data_type": data_type, "domain": "POINT"}, label=label)
 
@@ -542,19 +563,7 @@ def _kelvin_nodes():
         "high_split": Node("ShaderNodeSeparateXYZ", 46, label="high"),
         "low_xy": Node("ShaderNodeCombineXYZ", 47, values={"Z": -1e9}, label="low, any height"),
         "high_xy": Node("ShaderNodeCombineXYZ", 47, values={"Z": 1e9}, label="high, any height"),
-        "above_low": Node(
-            "FunctionNodeCompare",
-            48,
-            {"data_type": "VECTOR", "mode": "ELEMENT", "operation": "GREATER_THAN"},
-            label="above the low corner",
-        ),
-        "below_high": Node(
-            "FunctionNodeCompare",
-            48,
-            {"data_type": "VECTOR", "mode": "ELEMENT", "operation": "LESS_THAN"},
-            label="below the high corner",
-        ),
-        "near_track": Node("FunctionNodeBooleanMath", 49, {"operation": "AND"}, label="inside the box"),
+        **_box_test(("above_low", "below_high", "near_track"), 48, "the box"),
         "set": Node("GeometryNodeSetPosition", 49, label="the wake"),
     }
     links = [
@@ -867,19 +876,7 @@ def _zone_nodes():
         "z_before": math("LESS_THAN", 54, "not past the oldest"),
         "z_k1": math("MULTIPLY", 55, ""),
         "z_kelvin": math("MULTIPLY", 56, "in the wedge"),
-        "r_above": Node(
-            "FunctionNodeCompare",
-            53,
-            {"data_type": "VECTOR", "mode": "ELEMENT", "operation": "GREATER_THAN"},
-            label="above the rings' low corner",
-        ),
-        "r_below": Node(
-            "FunctionNodeCompare",
-            53,
-            {"data_type": "VECTOR", "mode": "ELEMENT", "operation": "LESS_THAN"},
-            label="below their high corner",
-        ),
-        "r_in": Node("FunctionNodeBooleanMath", 54, {"operation": "AND"}, label="in the rings' box"),
+        **_box_test(("r_above", "r_below", "r_in"), 53, "the rings' box"),
         "z_waves": math("MAXIMUM", 57, "waves here: 1"),
         "z_band": math("LESS_THAN", 54, "near the trail"),
         "z_foam": math("MULTIPLY", 57, "foam here: 1 more"),
