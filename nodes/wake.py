@@ -3,7 +3,8 @@
 A simulation zone keeps the object's track: a point a frame where it was (in the water's own
 space, flattened), with the time, its speed, its heading and the distance it had come by then
 (`wake_time`, `wake_speed`, `wake_heading`, `wake_arc`); points older than `Keep` go. Each water
-point finds the track's point nearest it, and so its place in the track's frame: `x` metres
+point in the wake's zone (`_zone_nodes`: the others are left as they are) finds the track's
+point nearest it, and so its place in the track's frame: `x` metres
 behind the object along its track (turns included) and `y` across it.
 
 Its height there is the stationary-phase Kelvin pattern of a source moving at the speed the

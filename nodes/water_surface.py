@@ -50,6 +50,11 @@ carries the dull colour, the glint and the scattered light. The debug views only
 change these weights (and the foam's), so they cost no extra closures: view 2 is the
 refraction as seen through the water (`T` and the scatter included), so the final
 picture stays the composition of the views; 6 shows `T` and 7 the foam coverage, unlit.
+
+All of the above is the top side. Seen from below (Geometry > Backfacing) the weights are
+physics alone: the glossy's the Fresnel node's value at IOR 1.33 (it takes 1 / IOR on a
+backface and gives 1 past the critical angle), the refraction's 1 minus it, so the sky shows
+through Snell's window and the water below is mirrored outside it; no emission from below.
 """
 
 import math as _math
