@@ -9,16 +9,21 @@ behind the object along its track (turns included) and `y` across it.
 
 Its height there is the stationary-phase Kelvin pattern of a source moving at the speed the
 object had there (deep water, `ω² = g k`). Waves running at `θ` to the track stand still in the
-object's frame when `k = g / (U² cos² θ)`; at `tan α = y / x` those that reach the point solve
-`2 tan α tan² θ - tan θ + tan α = 0`: two of them (transverse and diverging) inside the wedge
-`tan α < 1 / sqrt(8)` (19.47°), none outside it. Each adds `cos(k (x cos θ + y sin θ))`, made
-smaller where it is short beside the hull (`exp(-0.05 k L)`) or shorter than four mesh cells
-(`Detail`); the two grow where they meet at the wedge's arms (the cusp) and fade just beyond
-it (the stationary-phase weight `s^(-1/2)` near the arms, `s = sqrt(1 - 8 tan² α)`, is
-taken as `(s² + 0.01)^(-1/3)`, scaled to 1 there: finite, and highest on the arms, as the Airy
-function there is). The height scales as `Strength x Draft x Fr²` (`Fr = U / sqrt(g L)`, its
-square at most 0.25: faster hulls' waves break rather than grow), falls as
-`sqrt(L / (L + r))` with distance and `exp(-age / Fade)` with time.
+object's frame when `k = g / (U² cos² θ)`, with phase `ψ = k (x cos θ - y sin θ)`; at
+`tan α = y / x` the phase is stationary where `2 tan α tan² θ - tan θ + tan α = 0`: two waves
+(transverse and diverging) inside the wedge `tan α < 1 / sqrt(8)` (19.47°), none outside it.
+Each adds `p̂(k) sqrt(2π / |ψ''|) cos(ψ ± π/4)` (`+` transverse, `-` diverging; `|ψ''| = g x
+sec³ θ s / U²`, `s = sqrt(1 - 8 tan² α)`): the hull a Gaussian pressure patch one `Length` long
+(Darmon, Benzaquen and Raphaël 2014), so it makes waves about its own length best,
+`p̂(k) = (k L / 2π)² exp(1 - (k L / 2π)²)`. That is why above a Froude number of about 0.5 the
+highest waves draw in towards the track (about `0.2 / Fr` rad, as Rabaud and Moisy measured)
+while the wedge stays 19.47° wide. On the arms the two waves meet and the stationary phase
+breaks down: `s` is taken as `sqrt(s² + ε²)`, `ε² = (4 U² / (g x))^(2/3)` (Airy's scale), and
+the waves die out over `ε²` beyond. Waves shorter than four mesh cells (`Detail`) are left out.
+The height scales as `Strength x Draft x Fr²` (`Fr = U / sqrt(g L)`, its square at most 0.25:
+faster hulls' waves break rather than grow), grows in from the hull back over half its
+length and fades as `exp(-age / Fade)`. `tests/test_wake.py` compares it over the whole patch
+behind the hull with the integral itself (`tools/kelvin_model.py`).
 
 Rings: where the object's origin crosses the water's rest level downwards, a ring: waves twice
 its beam long, whose envelope runs out at their group speed (`ω² = g k + (σ/ρ) k³`: gravity
@@ -422,8 +427,10 @@ def _frame_nodes():
     return nodes, links
 
 
-def _root(tag, tau, column):
-    """One stationary wave (tan θ from `tau`, a "node:socket"): its weighted cosine term."""
+def _root(tag, tau, sign, column):
+    """One stationary wave (tan θ from `tau`, a "node:socket"): its term, the stationary-phase
+    share `p̂(k) sqrt(2π / |ψ''|)` x `cos(ψ ± π/4)` (`sign`: +1 transverse, -1 diverging), made
+    smaller where it is shorter than four mesh cells (`Detail`)."""
     n = f"{tag}_"
     nodes = {
         n + "tau2": math("MULTIPLY", column, f"{tag}: tan² θ"),
@@ -431,13 +438,23 @@ def _root(tag, tau, column):
         n + "q": math("SQRT", column + 2, "1 / cos θ"),
         n + "k": math("MULTIPLY", column + 2, "k = g / (U² cos² θ)"),
         n + "y_tau": math("MULTIPLY", column, "y tan θ"),
-        n + "path": math("ADD", column + 1, "x + y tan θ"),
-        n + "phase_a": math("MULTIPLY", column + 3, "(x + y tan θ) / cos θ"),
-        n + "phase": math("MULTIPLY", column + 4, "k (x cos θ + y sin θ)"),
-        n + "wave": math("COSINE", column + 5, "cos(phase)"),
-        n + "kl": math("MULTIPLY", column + 3, "k L"),
-        n + "hull": math("MULTIPLY", column + 4, "-0.05 k L", b=-0.05),
-        n + "hull_w": math("EXPONENT", column + 5, "short beside the hull: less"),
+        n + "path": math("SUBTRACT", column + 1, "x - y tan θ"),
+        n + "phase_a": math("MULTIPLY", column + 3, "(x - y tan θ) / cos θ"),
+        n + "phase": math(
+            "MULTIPLY_ADD", column + 4, "k (x cos θ - y sin θ) ± π/4", c=sign * 3.141592653589793 / 4.0
+        ),
+        n + "wave": math("COSINE", column + 5, "cos"),
+        # The hull's share of waves k long: (k L / 2π)² exp(1 - (k L / 2π)²), 1 at λ = L.
+        n + "kl": math("MULTIPLY", column + 3, "k L / 2π"),
+        n + "kl2": math("MULTIPLY", column + 4, "(k L / 2π)²"),
+        n + "spec_arg": math("SUBTRACT", column + 5, "1 - (k L / 2π)²", a=1.0),
+        n + "spec_exp": math("EXPONENT", column + 6, "exp"),
+        n + "spec": math("MULTIPLY", column + 7, "p̂(k): the hull's share"),
+        # |ψ''| = g/U² x sec³ θ x s (s the wedge's root): the wave's stationary-phase size.
+        n + "q3": math("MULTIPLY", column + 3, "sec³ θ"),
+        n + "curv": math("MULTIPLY", column + 4, "|ψ''|"),
+        n + "sp2": math("DIVIDE", column + 5, "2π / |ψ''|", a=2.0 * 3.141592653589793),
+        n + "sp": math("SQRT", column + 6, "sqrt(2π / |ψ''|)"),
         n + "lambda": math("DIVIDE", column + 3, "wavelength", a=2.0 * 3.141592653589793),
         n + "mesh": math("DIVIDE", column + 4, "wavelength / 4 cells"),
         n + "mesh_w": Node(
@@ -447,8 +464,9 @@ def _root(tag, tau, column):
             {"From Min": 0.5, "From Max": 1.0, "To Min": 0.0, "To Max": 1.0},
             label="the mesh can hold it",
         ),
-        n + "weight": math("MULTIPLY", column + 6, "weights"),
-        n + "term": math("MULTIPLY", column + 7, f"{tag} term"),
+        n + "size": math("MULTIPLY", column + 8, "p̂ x sqrt(2π / |ψ''|)"),
+        n + "weight": math("MULTIPLY", column + 9, "where the mesh holds it"),
+        n + "term": math("MULTIPLY", column + 10, f"{tag} term"),
     }
     links = (
         (tau, n + "tau2:#0"),
@@ -467,14 +485,26 @@ def _root(tag, tau, column):
         ("at_kscale:Value", n + "phase:#1"),
         (n + "phase:Value", n + "wave:#0"),
         (n + "k:Value", n + "kl:#0"),
-        ("input:Length", n + "kl:#1"),
-        (n + "kl:Value", n + "hull:#0"),
-        (n + "hull:Value", n + "hull_w:#0"),
+        ("l_2pi:Value", n + "kl:#1"),
+        (n + "kl:Value", n + "kl2:#0"),
+        (n + "kl:Value", n + "kl2:#1"),
+        (n + "kl2:Value", n + "spec_arg:#1"),
+        (n + "spec_arg:Value", n + "spec_exp:#0"),
+        (n + "kl2:Value", n + "spec:#0"),
+        (n + "spec_exp:Value", n + "spec:#1"),
+        (n + "q2:Value", n + "q3:#0"),
+        (n + "q:Value", n + "q3:#1"),
+        (n + "q3:Value", n + "curv:#0"),
+        ("sp_base:Value", n + "curv:#1"),
+        (n + "curv:Value", n + "sp2:#1"),
+        (n + "sp2:Value", n + "sp:#0"),
         (n + "k:Value", n + "lambda:#1"),
         (n + "lambda:Value", n + "mesh:#0"),
         ("four_cells:Value", n + "mesh:#1"),
         (n + "mesh:Value", n + "mesh_w:Value"),
-        (n + "hull_w:Value", n + "weight:#0"),
+        (n + "spec:Value", n + "size:#0"),
+        (n + "sp:Value", n + "size:#1"),
+        (n + "size:Value", n + "weight:#0"),
         (n + "mesh_w:Result", n + "weight:#1"),
         (n + "weight:Value", n + "term:#0"),
         (n + "wave:Value", n + "term:#1"),
@@ -502,23 +532,26 @@ def _kelvin_nodes():
         "k_scale": math("DIVIDE", 24, "g / U²", a=G),
         "four_cells": math("MULTIPLY", 22, "4 cells", b=4.0),
         "sum": math("ADD", 40, "both waves"),
-        "cusp_base": math("ADD", 28, "s² + 0.01", b=0.01),
-        "cusp_raw": math("POWER", 29, "higher at the arms", b=-1.0 / 3.0),
-        "cusp": math("MULTIPLY", 30, "1 on the arms", b=0.01 ** (1.0 / 3.0)),
+        "l_2pi": math("DIVIDE", 22, "L / 2π", b=2.0 * 3.141592653589793),
+        # The stationary phase breaks down on the arms, where the two waves meet (s = 0): there
+        # the sum is Airy's, its size falling as (g x / U²)^(-1/3). s is taken as
+        # sqrt(s² + ε²), ε² = (4 U² / (g x))^(2/3), and the waves die out beyond the arms over ε².
+        "x_amp": math("MAXIMUM", 23, "x, past the hull's first quarter"),
+        "l_quarter": math("MULTIPLY", 22, "L / 4", b=0.25),
+        "kx": math("MULTIPLY", 24, "g x / U²"),
+        "a_kx": math("DIVIDE", 25, "4 U² / (g x)", a=4.0),
+        "eps2": math("POWER", 26, "ε²", b=2.0 / 3.0),
+        "s2_eff": math("ADD", 28, "s² + ε²"),
+        "s_eff": math("SQRT", 29, "s, finite on the arms"),
+        "sp_base": math("MULTIPLY", 30, "g x / U² x s"),
         "beyond": math("MINIMUM", 27, "how far outside (< 0)", b=0.0),
-        "beyond_s": math("DIVIDE", 28, "/ 0.04", b=0.04),
+        "beyond_s": math("DIVIDE", 28, "/ ε²"),
         "outside": math("EXPONENT", 29, "fades just beyond the arms"),
         "fr2": math("DIVIDE", 24, "Fr² = U² / (g L)"),
         "gl": math("MULTIPLY", 23, "g L", a=G),
         "fr2_cap": math("MINIMUM", 25, "Fr² up to 0.25: waves break beyond", b=0.25),
         "height": math("MULTIPLY", 26, "Draft x Fr²"),
         "strength": math("MULTIPLY", 26, "x Strength"),
-        "r2_x": math("MULTIPLY", 23, "x²"),
-        "r2": math("MULTIPLY_ADD", 24, "x² + y²"),
-        "r": math("SQRT", 25, "r"),
-        "l_r": math("ADD", 26, "L + r"),
-        "l_over": math("DIVIDE", 27, "L / (L + r)"),
-        "decay": math("SQRT", 28, "sqrt(L / (L + r))"),
         "age_s": math("DIVIDE", 23, "age / Fade"),
         "age_neg": math("MULTIPLY", 24, "-", b=-1.0),
         "fade": math("EXPONENT", 25, "exp(-age / Fade)"),
@@ -532,9 +565,7 @@ def _kelvin_nodes():
         "in_track": math("LESS_THAN", 22, "not behind where it began"),
         "in_track_x": math("ADD", 21, "track's length + 1 cell"),
         "e1": math("MULTIPLY", 41, ""),
-        "e2": math("MULTIPLY", 42, ""),
         "e3": math("MULTIPLY", 43, ""),
-        "e4": math("MULTIPLY", 44, ""),
         "amp": math("MULTIPLY", 27, "faded height scale"),
         "e6": math("MULTIPLY", 46, ""),
         "eta": math("MULTIPLY", 47, "height"),
@@ -591,11 +622,22 @@ def _kelvin_nodes():
         ("input:Detail", "four_cells:#0"),
         ("t_term:Value", "sum:#0"),
         ("d_term:Value", "sum:#1"),
-        ("disc_in:Value", "cusp_base:#0"),
-        ("cusp_base:Value", "cusp_raw:#0"),
-        ("cusp_raw:Value", "cusp:#0"),
+        ("input:Length", "l_2pi:#0"),
+        ("input:Length", "l_quarter:#0"),
+        ("x_pos:Value", "x_amp:#0"),
+        ("l_quarter:Value", "x_amp:#1"),
+        ("at_kscale:Value", "kx:#0"),
+        ("x_amp:Value", "kx:#1"),
+        ("kx:Value", "a_kx:#1"),
+        ("a_kx:Value", "eps2:#0"),
+        ("disc_in:Value", "s2_eff:#0"),
+        ("eps2:Value", "s2_eff:#1"),
+        ("s2_eff:Value", "s_eff:#0"),
+        ("kx:Value", "sp_base:#0"),
+        ("s_eff:Value", "sp_base:#1"),
         ("disc:Value", "beyond:#0"),
         ("beyond:Value", "beyond_s:#0"),
+        ("eps2:Value", "beyond_s:#1"),
         ("beyond_s:Value", "outside:#0"),
         ("input:Length", "gl:#1"),
         ("u2:Value", "fr2:#0"),
@@ -605,17 +647,6 @@ def _kelvin_nodes():
         ("fr2_cap:Value", "height:#1"),
         ("height:Value", "strength:#0"),
         ("input:Strength", "strength:#1"),
-        ("x:Value", "r2_x:#0"),
-        ("x:Value", "r2_x:#1"),
-        ("y:Value", "r2:#0"),
-        ("y:Value", "r2:#1"),
-        ("r2_x:Value", "r2:#2"),
-        ("r2:Value", "r:#0"),
-        ("input:Length", "l_r:#0"),
-        ("r:Value", "l_r:#1"),
-        ("input:Length", "l_over:#0"),
-        ("l_r:Value", "l_over:#1"),
-        ("l_over:Value", "decay:#0"),
         ("age:Value", "age_s:#0"),
         ("input:Fade", "age_s:#1"),
         ("age_s:Value", "age_neg:#0"),
@@ -628,16 +659,12 @@ def _kelvin_nodes():
         ("x:Value", "in_track:#0"),
         ("in_track_x:Value", "in_track:#1"),
         ("sum:Value", "e1:#0"),
-        ("cusp:Value", "e1:#1"),
-        ("e1:Value", "e2:#0"),
-        ("outside:Value", "e2:#1"),
-        ("e2:Value", "e3:#0"),
+        ("outside:Value", "e1:#1"),
+        ("e1:Value", "e3:#0"),
         ("at_amp:Value", "e3:#1"),
-        ("e3:Value", "e4:#0"),
-        ("decay:Value", "e4:#1"),
         ("strength:Value", "amp:#0"),
         ("fade:Value", "amp:#1"),
-        ("e4:Value", "e6:#0"),
+        ("e3:Value", "e6:#0"),
         ("ramp:Result", "e6:#1"),
         ("e6:Value", "eta:#0"),
         ("in_track:Value", "eta:#1"),
@@ -686,8 +713,8 @@ def _kelvin_nodes():
         ("below_high:Result", "near_track:#1"),
         ("in_wake:Value", "set:Selection"),
     ]
-    for tag, tau in (("t", "tau_t:Value"), ("d", "tau_d:Value")):
-        more_nodes, more_links = _root(tag, tau, 31)
+    for tag, tau, sign in (("t", "tau_t:Value", 1.0), ("d", "tau_d:Value", -1.0)):
+        more_nodes, more_links = _root(tag, tau, sign, 31)
         nodes |= more_nodes
         links += more_links
     return nodes, tuple(links)
@@ -981,7 +1008,7 @@ def _spec():
         links += more_links
     return GroupSpec(
         name=NAME,
-        version=2,
+        version=3,
         description="The Kelvin wake, rings and foam of one moving object (its track kept by a "
         "simulation zone)",
         tree_type="GeometryNodeTree",
