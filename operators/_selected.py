@@ -21,11 +21,15 @@ def run_on_selected(operator, context, act, errors, nothing, floating_first=True
     if len(chosen) > 1:
         operator.report({"ERROR"}, "Select one water at most: the other objects act on it")
         return {"CANCELLED"}
+    # Every object's water is found before any is acted on: acting changes the scene (a wake's
+    # modifier), and ray casting an evaluated water of the depsgraph from before that crashes.
     depsgraph = context.evaluated_depsgraph_get()
-    done, skipped = [], []
+    targets = []
     for obj in not_water(context):
         water = chosen[0] if chosen else (floating_on(obj) if floating_first else None)
-        water = water or water_below(obj, context.scene, depsgraph)
+        targets.append((obj, water or water_below(obj, context.scene, depsgraph)))
+    done, skipped = [], []
+    for obj, water in targets:
         if water is None:
             skipped.append(f"'{obj.name}' is over no water: select the water too")
             continue

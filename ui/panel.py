@@ -305,6 +305,9 @@ class VIEW3D_PT_water_surface(bpy.types.Panel):
         obj = context.active_object
         for modifier in wake.modifiers_of(obj) if obj is not None else ():
             box.label(text=f"Leaves a wake on '{modifier.id_data.name}'")
+            note = wake.coarse_note(modifier)
+            if note:
+                box.label(text=note, icon="ERROR")
         for water in {m.id_data for m in (wake.modifiers_of(obj) if obj is not None else ())}:
             if wake.unbaked(water):
                 box.label(text=f"The wake on '{water.name}' is not baked: farms render it flat", icon="ERROR")

@@ -79,9 +79,17 @@ def _constraint(obj, role, name, kind):
     return found
 
 
+def _number(name, value):
+    """`value` as a float, or FloatError saying which input was not a number."""
+    try:
+        return float(value)
+    except (TypeError, ValueError):
+        raise FloatError(f"The {name} must be a number (got {value!r})") from None
+
+
 def _check_sizes(draft, length, beam):
     for name, value in (("draft", draft), ("length", length), ("beam", beam)):
-        if value is not None and not (float(value) >= 0.0 and float(value) < 1e5):
+        if value is not None and not (_number(name, value) >= 0.0 and float(value) < 1e5):
             raise FloatError(f"The {name} must be 0 m or more (got {value})")
         if name != "draft" and value is not None and float(value) == 0.0:
             raise FloatError(f"The footprint's {name} must be above 0 m (leave it out to take the bounds')")
@@ -101,7 +109,16 @@ def float_on_water(
     if water == obj:
         raise FloatError(f"'{obj.name}' is the water itself")
     _check_sizes(draft, length, beam)
-    damping = min(max(float(tilt_damping), 0.0), 1.0)
+    damping = _number("tilt damping", tilt_damping)
+    if not 0.0 <= damping <= 1.0:  # NaN too
+        raise FloatError(f"The tilt damping must be 0 to 1 (got {tilt_damping})")
+    if length is None or beam is None:
+        size_length, size_beam, *_rest = float_rig.footprint_of(obj)
+        if (length is None and size_length <= 0.0) or (beam is None and size_beam <= 0.0):
+            raise FloatError(
+                f"'{obj.name}' has no size to float by ({obj.type.lower()}, its bounds flat): "
+                "give it a mesh, or name the footprint's length and beam"
+            )
     try:  # what floats on a water is never in its surroundings: the two would make a cycle
         changes = surroundings.leave_out(water, obj)
     except surroundings.SurroundingsError as error:

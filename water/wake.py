@@ -22,6 +22,7 @@ from ..nodes import SPECS
 from ..nodes import wake as wake_spec
 from ..nodes.builder import ensure_group
 from ..nodes.ownership import role_of
+from ..presets import schema
 from . import footprint_math, keep_out
 from .editable import check_editable
 from .float_constraints import pose_of
@@ -35,6 +36,8 @@ FOAM_READ = "Water Wake Foam Amount"
 FOAM_COLOR = (0.85, 0.88, 0.9, 1.0)
 LAKE_DRIFT = 0.3  # m/s: foam drift downwind on a lake or the seeds' ocean
 SEA_DRIFT = 0.03  # of the wind speed, on the open sea (the surface drift: about 3%)
+STRENGTH_MAX = 10.0  # the group's Strength socket's maximum
+DETAIL_MAX = 100.0  # the group's Detail socket's maximum
 
 
 class WakeError(ValueError):
@@ -139,6 +142,12 @@ def add_wake_source(obj, water, strength=1.0):
         raise WakeError(f"'{getattr(water, 'name', water)}' is not water")
     if obj is None or obj == water or is_water(obj):
         raise WakeError("Water leaves no wake on water: select the moving object and the water")
+    try:  # checked before anything is made: a bad value leaves nothing half-made
+        strength = float(strength)
+    except (TypeError, ValueError):
+        raise WakeError(f"The wake's strength must be a number (got {strength!r})") from None
+    if not 0.0 <= strength <= STRENGTH_MAX:
+        raise WakeError(f"The wake's strength must be 0 to {STRENGTH_MAX:g} (got {strength})")
     material = water_material(water)
     check_editable(water, material)
     modifier = next((m for m in wake_modifiers(water) if source_of(m) == obj), None)
@@ -156,13 +165,33 @@ def add_wake_source(obj, water, strength=1.0):
         ("Length", length),
         ("Beam", beam),
         ("Draft", draft),
-        ("Strength", float(strength)),
-        ("Detail", _cell(water)),
+        ("Strength", strength),
+        ("Detail", min(_cell(water), DETAIL_MAX)),
         ("Drift", _drift(water)),
     ):
         set_wave_input(modifier, name, value)
     show_foam(material)
-    return [change]
+    note = coarse_note(modifier)
+    return [change] + ([note] if note else [])
+
+
+def coarse_note(modifier):
+    """A sentence when the water's mesh is too coarse to show the wake `modifier` makes (the hull
+    makes waves about its own length best; a wave needs four cells), with the resolution that
+    would, else None."""
+    water = modifier.id_data
+    length = get_wave_input(modifier, "Length") or 1.0
+    cell, wanted = _cell(water), length / 4.0
+    if cell <= wanted:
+        return None
+    size = max(water.dimensions[:2]) or 1.0
+    source = getattr(source_of(modifier), "name", "?")
+    resolution = min(int(np.ceil(size / wanted)) + 1, schema.RESOLUTION.max)
+    return (
+        f"'{water.name}''s mesh is too coarse to show the wake of '{getattr(source, 'name', '?')}' "
+        f"(cells {cell:.3g} m, its waves need {wanted:.2g} m): add the water with Resolution "
+        f"{resolution} or more, or subdivide it"
+    )
 
 
 def remove_wake_source(obj, water=None):
@@ -174,9 +203,19 @@ def remove_wake_source(obj, water=None):
             check_editable(each)
             each.modifiers.remove(modifier)
             changes.append(f"'{obj.name}' leaves no wake on '{each.name}'")
-        if not wake_modifiers(each):
-            hide_foam(water_material(each))
+        _hide_foam_when_unused(each)
     return changes
+
+
+def _hide_foam_when_unused(water):
+    """Takes the foam out of `water`'s material once no water using it has a wake left (a Shift+D
+    copy shares the material: its wake going must not take the original's foam)."""
+    material = water_material(water)
+    if material is None or wake_modifiers(water):
+        return
+    if any(wake_modifiers(o) for o in bpy.data.objects if o != water and water_material(o) == material):
+        return
+    hide_foam(material)
 
 
 def show_foam(material):
@@ -239,8 +278,7 @@ def remove_lost_sources():
                 name = source.name if source is not None else modifier.name
                 water.modifiers.remove(modifier)
                 changes.append(f"'{water.name}' lost the wake of '{name}' (it was deleted)")
-        if not wake_modifiers(water):
-            hide_foam(water_material(water))
+        _hide_foam_when_unused(water)
     return changes
 
 
@@ -276,6 +314,8 @@ def bake(water, scene):
     """Bakes the wakes of `water` over `scene`'s frame range: packed into the .blend from 4.3, into
     `bake_folder()` beside the saved .blend on 4.2. Frames rendered apart, on a farm, then equal
     one run from the start. Returns the changes."""
+    if not is_water(water):
+        raise WakeError(f"'{getattr(water, 'name', water)}' is not water: name the water to bake")
     modifiers = wake_modifiers(water)
     if not modifiers:
         raise WakeError(f"'{water.name}' has no wake to bake")
