@@ -25,6 +25,10 @@ faster hulls' waves break rather than grow), grows in from the hull back over ha
 length and fades as `exp(-age / Fade)`. `tests/test_wake.py` compares it over the whole patch
 behind the hull with the integral itself (`tools/kelvin_model.py`).
 
+Lengths come in metres (`Length`, `Beam`, `Draft`, `Detail`, `Drift`) and g in m/s²: the group
+reads them in the water's own units through its scale (`_units_nodes`), so a scaled water makes
+the same wake in metres.
+
 Rings: where the object's origin crosses the water's rest level downwards, a ring: waves twice
 its beam long, whose envelope runs out at their group speed (`ω² = g k + (σ/ρ) k³`: gravity
 and capillary), fading over 4 s and spreading as the ring grows.
@@ -720,6 +724,54 @@ def _kelvin_nodes():
     return nodes, tuple(links)
 
 
+def _clamped_sample(data_type, column, label):
+    """A Sample Index that reads the first or last point past either end (a track's ends)."""
+    return Node(
+        "GeometryNodeSampleIndex",
+        column,
+        {"data_type": data_type, "domain": "POINT", "clamp": True},
+        label=label,
+    )
+
+
+def _segment_distance(n, column):
+    """Nodes of the distance from `p_flat` to the segment between two points (`_segment_links`
+    wires them): `{n}_dist`."""
+    return {
+        n + "_d": vmath("SUBTRACT", column, "the segment"),
+        n + "_w": vmath("SUBTRACT", column, "p - its start"),
+        n + "_wd": vmath("DOT_PRODUCT", column + 1, "along it"),
+        n + "_dd": vmath("DOT_PRODUCT", column + 1, "its length²"),
+        n + "_dd_e": math("ADD", column + 2, "never 0", b=1e-9),
+        n + "_t": math("DIVIDE", column + 3, "t, within it", clamp=True),
+        n + "_foot": vmath("MULTIPLY_ADD", column + 4, "the foot"),
+        n + "_dist": math("ADD", column + 5, "distance", b=0.0),
+        n + "_len": vmath("DISTANCE", column + 5, "p to the foot"),
+    }
+
+
+def _segment_links(n, start, end):
+    return (
+        (end, n + "_d:#0"),
+        (start, n + "_d:#1"),
+        ("p_flat:Vector", n + "_w:#0"),
+        (start, n + "_w:#1"),
+        (n + "_w:Vector", n + "_wd:#0"),
+        (n + "_d:Vector", n + "_wd:#1"),
+        (n + "_d:Vector", n + "_dd:#0"),
+        (n + "_d:Vector", n + "_dd:#1"),
+        (n + "_dd:Value", n + "_dd_e:#0"),
+        (n + "_wd:Value", n + "_t:#0"),
+        (n + "_dd_e:Value", n + "_t:#1"),
+        (n + "_d:Vector", n + "_foot:#0"),
+        (n + "_t:Value", n + "_foot:#1"),
+        (start, n + "_foot:#2"),
+        ("p_flat:Vector", n + "_len:#0"),
+        (n + "_foot:Vector", n + "_len:#1"),
+        (n + "_len:Value", n + "_dist:#0"),
+    )
+
+
 def _foam_nodes():
     """Foam round the hull as it moves, and along its track, drifting, spreading and fading."""
     nodes = {
@@ -755,7 +807,15 @@ def _foam_nodes():
         # The trail's width and weight are worked out on the track's points, then sampled.
         "d_at_width": _sample("FLOAT", 21, "its width"),
         "d_at_weight": _sample("FLOAT", 21, "its weight"),
-        "d_distance": vmath("DISTANCE", 22, "distance"),
+        # The distance to the drifted track's line, not to its nearest point: a track point a
+        # frame lies metres apart at speed, and the trail would break into dots.
+        "d_distance": math("MINIMUM", 22, "distance to the trail's line"),
+        **_segment_distance("d_back", 21),
+        **_segment_distance("d_ahead", 21),
+        "d_i_back": math("SUBTRACT", 20, "the point before", b=1.0),
+        "d_i_ahead": math("ADD", 20, "the point after", b=1.0),
+        "d_back_end": _clamped_sample("FLOAT_VECTOR", 21, "the point before it"),
+        "d_ahead_end": _clamped_sample("FLOAT_VECTOR", 21, "the point after it"),
         "d_age": math("SUBTRACT", 18, "each track point's age"),
         "d_spread": math("MULTIPLY", 23, "0.1 m/s x age", b=0.1),
         "third_beam": math("MULTIPLY", 23, "B / 3", b=1.0 / 3.0),
@@ -822,8 +882,21 @@ def _foam_nodes():
         ("drifted:Geometry", "d_at_weight:Geometry"),
         ("trail_foam_full:Value", "d_at_weight:Value"),
         ("d_nearest:Index", "d_at_weight:Index"),
-        ("p_flat:Vector", "d_distance:#0"),
-        ("d_at_position:Value", "d_distance:#1"),
+        ("d_nearest:Index", "d_i_back:#0"),
+        ("d_nearest:Index", "d_i_ahead:#0"),
+        *(
+            link
+            for end, index in (("d_back_end", "d_i_back"), ("d_ahead_end", "d_i_ahead"))
+            for link in (
+                ("drifted:Geometry", f"{end}:Geometry"),
+                ("d_position:Position", f"{end}:Value"),
+                (f"{index}:Value", f"{end}:Index"),
+            )
+        ),
+        *_segment_links("d_back", "d_at_position:Value", "d_back_end:Value"),
+        *_segment_links("d_ahead", "d_at_position:Value", "d_ahead_end:Value"),
+        ("d_back_dist:Value", "d_distance:#0"),
+        ("d_ahead_dist:Value", "d_distance:#1"),
         ("clock:Seconds", "d_age:#0"),
         ("t_time:Attribute", "d_age:#1"),
         ("d_age:Value", "d_spread:#0"),
@@ -999,6 +1072,57 @@ def _zone_nodes():
     return nodes, links
 
 
+# The inputs in metres (and g), read through the water's scale: the group works in the water's
+# own space, so on a water scaled 2 a metre is half a unit.
+IN_UNITS = {
+    "input:Length": "length_u:Value",
+    "input:Beam": "beam_u:Value",
+    "input:Draft": "draft_u:Value",
+    "input:Detail": "detail_u:Value",
+    "input:Drift": "drift_u:Vector",
+}
+G_SOCKETS = ("k_scale:#0", "gl:#0", "ring_sk2:#2", "ring_cg_num:#2")  # where g goes in
+
+
+def _units_nodes():
+    """Metres in the water's own units: divided by its scale across (its largest of X and Y) and,
+    for the draft (a height), up."""
+    nodes = {
+        "self": Node("GeometryNodeSelfObject", 0, label="the water"),
+        "self_info": Node("GeometryNodeObjectInfo", 1, {"transform_space": "ORIGINAL"}, label="its scale"),
+        "self_scale": Node("ShaderNodeSeparateXYZ", 2, label="scale"),
+        "across": math("MAXIMUM", 3, "metres a unit across"),
+        "across_e": math("MAXIMUM", 4, "(> 0)", b=1e-6),
+        "up_e": math("MAXIMUM", 4, "metres a unit up (> 0)", b=1e-6),
+        "per_metre": math("DIVIDE", 5, "units a metre", a=1.0),
+        "length_u": math("DIVIDE", 6, "Length, in units"),
+        "beam_u": math("DIVIDE", 6, "Beam, in units"),
+        "detail_u": math("DIVIDE", 6, "Detail, in units"),
+        "draft_u": math("DIVIDE", 6, "Draft, in units up"),
+        "drift_u": vmath("SCALE", 6, "Drift, in units"),
+        "g_u": math("DIVIDE", 6, "g, in units", a=G),
+    }
+    links = [
+        ("self:Self Object", "self_info:Object"),
+        ("self_info:Scale", "self_scale:Vector"),
+        ("self_scale:X", "across:#0"),
+        ("self_scale:Y", "across:#1"),
+        ("across:Value", "across_e:#0"),
+        ("self_scale:Z", "up_e:#0"),
+        ("across_e:Value", "per_metre:#1"),
+        ("input:Length", "length_u:#0"),
+        ("input:Beam", "beam_u:#0"),
+        ("input:Detail", "detail_u:#0"),
+        ("input:Draft", "draft_u:#0"),
+        ("input:Drift", "drift_u:#0"),
+        ("per_metre:Value", "drift_u:Scale"),
+        ("across_e:Value", "g_u:#1"),
+    ]
+    links += [("across_e:Value", f"{key}:#1") for key in ("length_u", "beam_u", "detail_u")]
+    links.append(("up_e:Value", "draft_u:#1"))
+    return nodes, links
+
+
 def _spec():
     nodes, links = {}, []
     for part in (_track_nodes, _ring_nodes, _frame_nodes, _kelvin_nodes, _foam_nodes, _zone_nodes):
@@ -1006,6 +1130,12 @@ def _spec():
         assert not set(more_nodes) & set(nodes), set(more_nodes) & set(nodes)  # one key, one node
         nodes |= more_nodes
         links += more_links
+    links = [(IN_UNITS.get(source, source), target) for source, target in links]
+    links += [("g_u:Value", socket) for socket in G_SOCKETS]
+    more_nodes, more_links = _units_nodes()
+    assert not set(more_nodes) & set(nodes), set(more_nodes) & set(nodes)
+    nodes |= more_nodes
+    links += more_links
     return GroupSpec(
         name=NAME,
         version=3,

@@ -12,6 +12,13 @@ def not_water(context):
     return [obj for obj in context.selected_objects if not is_water(obj)]
 
 
+def _depth(obj):
+    depth = 0
+    while obj.parent is not None:
+        obj, depth = obj.parent, depth + 1
+    return depth
+
+
 def run_on_selected(operator, context, act, errors, nothing, floating_first=True):
     """Calls `act(obj, water)` for each selected object that is not water, on the one selected
     water, else the water it floats on (`floating_first`), else the water straight below or above
@@ -25,7 +32,9 @@ def run_on_selected(operator, context, act, errors, nothing, floating_first=True
     # modifier), and ray casting an evaluated water of the depsgraph from before that crashes.
     depsgraph = context.evaluated_depsgraph_get()
     targets = []
-    for obj in not_water(context):
+    # Parents before their children: floating a parent first, its child is then refused, with
+    # a reason (it rides with it), not the other way round.
+    for obj in sorted(not_water(context), key=_depth):
         water = chosen[0] if chosen else (floating_on(obj) if floating_first else None)
         targets.append((obj, water or water_below(obj, context.scene, depsgraph)))
     done, skipped = [], []

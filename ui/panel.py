@@ -309,8 +309,8 @@ class VIEW3D_PT_water_surface(bpy.types.Panel):
             if note:
                 box.label(text=note, icon="ERROR")
         for water in {m.id_data for m in (wake.modifiers_of(obj) if obj is not None else ())}:
-            if wake.unbaked(water):
-                box.label(text=f"The wake on '{water.name}' is not baked: farms render it flat", icon="ERROR")
+            for problem in wake.bake_problems(water, context.scene):
+                box.label(text=problem, icon="ERROR")
             box.operator("object.water_wake_bake", icon="FILE_REFRESH")
 
     def draw_waves(self, layout, obj):

@@ -336,11 +336,12 @@ def render_file(
         scene.cycles.samples = samples
     scene.render.image_settings.file_format = file_format
     scene.render.use_file_extension = False
-    for water in [obj for obj in scene.objects if wake.unbaked(obj)]:
-        progress(
-            f"water_surface: the wake on '{water.name}' is not baked: a frame rendered on its own "
-            "shows it flat (bake it first: Bake Wake, or api.bake)"
-        )
+    for water in scene.objects:
+        for problem in wake.bake_problems(water, scene):
+            progress(
+                f"water_surface: {problem[0].lower()}{problem[1:]} (a frame rendered on its own shows it "
+                "wrong: Bake Wake, or api.bake)"
+            )
     if not frames:
         if frame is not None:
             scene.frame_set(frame)

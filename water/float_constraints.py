@@ -61,6 +61,17 @@ def constraint(obj, role):
     return found if found is not None and found.type in _KINDS[role] else None
 
 
+def floating_ancestor(obj):
+    """The nearest parent of `obj` (its parent, theirs, ...) that floats, or None: what floats
+    with it, whose motion waits on the water."""
+    parent = obj.parent
+    while parent is not None:
+        if pose_of(parent) is not None:
+            return parent
+        parent = parent.parent
+    return None
+
+
 def pose_of(obj):
     """The footprint rig's pose `obj` follows, or None (not floating, or floating the old way)."""
     for found in float_constraints(obj):

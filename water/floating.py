@@ -15,7 +15,16 @@ from mathutils import Vector
 
 from . import float_rig, physical_caustics, surroundings, wake
 from .editable import check_editable
-from .float_constraints import FLOAT, TILT, float_constraints, floating_on, forget, pose_of, remember
+from .float_constraints import (
+    FLOAT,
+    TILT,
+    float_constraints,
+    floating_ancestor,
+    floating_on,
+    forget,
+    pose_of,
+    remember,
+)
 from .float_constraints import constraint as constraint_for
 from .float_rig import footprint_settings
 from .values import is_water
@@ -87,6 +96,23 @@ def _number(name, value):
         raise FloatError(f"The {name} must be a number (got {value!r})") from None
 
 
+def _check_family(obj):
+    """A parent and its child cannot both wait on the water (a dependency cycle): a child of a
+    floating object rides with it; a child that floats, or leaves a wake, keeps its parent from
+    floating."""
+    ancestor = floating_ancestor(obj)
+    if ancestor is not None:
+        raise FloatError(f"'{obj.name}' is a child of '{ancestor.name}', which floats: it rides with it")
+    for child in obj.children_recursive:
+        if pose_of(child) is not None:
+            raise FloatError(f"'{child.name}', a child of '{obj.name}', floats itself: stop it first")
+        if wake.modifiers_of(child):
+            raise FloatError(
+                f"'{child.name}', a child of '{obj.name}', leaves a wake: take it off and add it to "
+                f"'{obj.name}' instead"
+            )
+
+
 def _check_sizes(draft, length, beam):
     for name, value in (("draft", draft), ("length", length), ("beam", beam)):
         if value is not None and not (_number(name, value) >= 0.0 and float(value) < 1e5):
@@ -108,6 +134,7 @@ def float_on_water(
         raise FloatError(f"'{obj.name}' has no water below it to float on")
     if water == obj:
         raise FloatError(f"'{obj.name}' is the water itself")
+    _check_family(obj)
     _check_sizes(draft, length, beam)
     damping = _number("tilt damping", tilt_damping)
     if not 0.0 <= damping <= 1.0:  # NaN too

@@ -13,19 +13,21 @@ unlit white foam (an Emission), put where the water's shader feeds the output (i
 a dry hull stays dry): the lake and the ocean shading alike.
 """
 
+import hashlib
 import os
 
 import bpy
 import numpy as np
 
 from ..nodes import SPECS
+from ..nodes import material as material_spec
 from ..nodes import wake as wake_spec
 from ..nodes.builder import ensure_group
 from ..nodes.ownership import role_of
 from ..presets import schema
 from . import footprint_math, keep_out
 from .editable import check_editable
-from .float_constraints import pose_of
+from .float_constraints import floating_ancestor, pose_of
 from .float_rig import OWNER_KEY, anchor_of, footprint_of, footprint_settings
 from .values import is_water, read_values, water_material
 from .waves import SURROUNDINGS_ROLE, get_wave_input, set_wave_input
@@ -142,6 +144,11 @@ def add_wake_source(obj, water, strength=1.0):
         raise WakeError(f"'{getattr(water, 'name', water)}' is not water")
     if obj is None or obj == water or is_water(obj):
         raise WakeError("Water leaves no wake on water: select the moving object and the water")
+    ancestor = floating_ancestor(obj)
+    if ancestor is not None:  # its motion waits on the water: the water cannot wait on it
+        raise WakeError(
+            f"'{obj.name}' rides on '{ancestor.name}', which floats: add the wake to '{ancestor.name}'"
+        )
     try:  # checked before anything is made: a bad value leaves nothing half-made
         strength = float(strength)
     except (TypeError, ValueError):
@@ -286,6 +293,8 @@ PACKED_BAKES_SINCE = (4, 3, 0)  # before: bakes go to a folder on disk
 
 
 BAKED_KEY = "water_surface_wake_baked"  # on the water: the names of its wake modifiers `bake` baked
+# On the water: {modifier name: what the bake was made of}, to tell a bake gone stale.
+BAKE_PRINT_KEY = "water_surface_wake_bake_print"
 
 
 def _baked_names(water):
@@ -297,10 +306,68 @@ def _forget_bake(water, modifier):
         water[BAKED_KEY] = [name for name in _baked_names(water) if name != modifier.name]
 
 
-def unbaked(water):
-    """The wake modifiers of `water` not baked since they last changed (a farm rendering frames
-    apart would show no wake on them)."""
-    return [m for m in wake_modifiers(water) if m.name not in _baked_names(water)]
+def _motion(modifier):
+    """What a bake of `modifier` depends on, as text: how its object (and each parent) moves, its
+    constraints, the modifier's inputs and the water's place."""
+    parts = []
+    obj = source_of(modifier)
+    while obj is not None:
+        parts.append((obj.name, tuple(obj.matrix_basis.col[3]), tuple(obj.rotation_euler), tuple(obj.scale)))
+        action = obj.animation_data.action if obj.animation_data else None
+        for fcurve in material_spec._action_fcurves(action):
+            keys = [
+                (tuple(k.co), tuple(k.handle_left), tuple(k.handle_right), k.interpolation)
+                for k in fcurve.keyframe_points
+            ]
+            parts.append((fcurve.data_path, fcurve.array_index, fcurve.mute, keys))
+        parts += [
+            (c.type, c.mute, c.influence, getattr(getattr(c, "target", None), "name", None))
+            for c in obj.constraints
+        ]
+        obj = obj.parent
+    for item in modifier.node_group.interface.items_tree if modifier.node_group else ():
+        if getattr(item, "in_out", None) == "INPUT" and item.socket_type != "NodeSocketGeometry":
+            value = get_wave_input(modifier, item.name)
+            if hasattr(value, "name"):  # the Source: an object
+                value = value.name
+            elif hasattr(value, "__len__"):  # a vector
+                value = tuple(value)
+            parts.append((item.name, value))
+    parts.append(tuple(tuple(row) for row in modifier.id_data.matrix_world))
+    return hashlib.sha1(repr(parts).encode("utf-8")).hexdigest()
+
+
+def bake_problems(water, scene):
+    """A sentence for each wake of `water` a farm would render wrong: not baked, baked before its
+    object's motion or the wake's inputs changed, or over frames that do not cover the scene's
+    (the wake freezes past the bake's last frame; one frame has no wake at all)."""
+    prints = water.get(BAKE_PRINT_KEY, {})
+    problems = []
+    for modifier in wake_modifiers(water):
+        name = getattr(source_of(modifier), "name", "?")
+        made = prints.get(modifier.name) if modifier.name in _baked_names(water) else None
+        if made is None:
+            problems.append(f"The wake on '{water.name}' is not baked: farms render it flat")
+            continue
+        start, end, motion = int(made["start"]), int(made["end"]), str(made["motion"])
+        if end <= start:
+            problems.append(f"The wake of '{name}' was baked over one frame: it has no wake; bake the range")
+        elif start > scene.frame_start or end < scene.frame_end:
+            problems.append(
+                f"The wake of '{name}' was baked for frames {start}-{end}, the scene runs "
+                f"{scene.frame_start}-{scene.frame_end}: bake again"
+            )
+        elif motion != _motion(modifier):
+            problems.append(
+                f"The wake of '{name}' was baked before its motion or the wake changed: bake again"
+            )
+    return problems
+
+
+def unbaked(water, scene=None):
+    """Whether a farm rendering frames apart would render a wake of `water` wrong (see
+    `bake_problems`)."""
+    return bool(bake_problems(water, scene or bpy.context.scene))
 
 
 def bake_folder():
@@ -343,5 +410,8 @@ def bake(water, scene):
             if "FINISHED" not in result:
                 raise WakeError(f"Baking the wake of '{water.name}' failed")
     water[BAKED_KEY] = [m.name for m in modifiers]
+    water[BAKE_PRINT_KEY] = {
+        m.name: {"start": scene.frame_start, "end": scene.frame_end, "motion": _motion(m)} for m in modifiers
+    }
     where = "into the file" if packed else f"to {bake_folder()}"
     return [f"baked the wake of '{water.name}', frames {scene.frame_start} to {scene.frame_end}, {where}"]
