@@ -252,7 +252,7 @@ def test_heights_grow_with_draft_and_speed_and_fall_behind(lake_wake):
     waves.set_wave_input(modifier, "Draft", DRAFT)
 
 
-def _straight_wake(length, speed, seconds, heading=2.3, end=(-8.0, 8.0), size=90.0):
+def _straight_wake(length, speed, seconds, heading=2.3, end=(-8.0, 8.0), size=90.0, fade=None):
     """A box hull `length` x 0.4 `length` x 0.25 `length` running straight at `speed` for
     `seconds` along `heading` (a diagonal, so the wake's frame is turned), ending at `end` on a
     lake meshed at 0.25 m: (x behind, y across, height) of the evaluated water."""
@@ -272,10 +272,12 @@ def _straight_wake(length, speed, seconds, heading=2.3, end=(-8.0, 8.0), size=90
         hull.keyframe_insert("rotation_euler", frame=frame)
     _linear(hull)
     _api().add_wake_source(hull, water)
+    (modifier,) = harness.addon("water.wake").wake_modifiers(water)
+    if fade is not None:
+        harness.addon("water.waves").set_wave_input(modifier, "Fade", fade)
     _step(scene, last)
     points, _foam = _surface(water)
     x, y = _track_frame(points, end, heading)
-    (modifier,) = harness.addon("water.wake").wake_modifiers(water)
     fade = harness.addon("water.waves").get_wave_input(modifier, "Fade")
     return x, y, points[:, 2], fade
 
@@ -370,6 +372,31 @@ def _reach(x, y, height):
     angle = np.degrees(np.arctan2(np.abs(y), x))
     rms = [math.sqrt(np.mean(height[(x > 12.0) & (angle >= a) & (angle < a + 1.0)] ** 2)) for a in range(27)]
     return max(a for a in range(27) if rms[a] > 0.15 * max(rms))
+
+
+def _slope(distances, sizes):
+    return float(np.polyfit(np.log(distances), np.log(sizes), 1)[0])
+
+
+def test_the_cusp_waves_fall_as_r_to_minus_a_third_and_the_transverse_as_minus_a_half(addon):
+    """Issue 37 point 2 (its fall with distance): stationary phase, with the fading in time off
+    (`Fade` 600 s), a 6 m hull at 4 m/s, 8 to 33 m behind: the highest waves on the arms fall as
+    `r^(-1/3)` (Airy's), those on the track as `r^(-1/2)`, each within 0.1 of the exponent."""
+    length, speed = 6.0, 4.0
+    x, y, height, _fade = _straight_wake(length, speed, 10.0, fade=600.0)
+    wavelength = 2.0 * math.pi * speed**2 / G
+    angle = np.degrees(np.arctan2(np.abs(y), x))
+    starts = np.arange(8.0, 33.0 - wavelength, wavelength / 2.0)
+    middles, axis, arms = [], [], []
+    for x0 in starts:
+        band = (x >= x0) & (x < x0 + wavelength)
+        middles.append(x0 + wavelength / 2.0)
+        axis.append(np.abs(height[band & (np.abs(y) < 0.2)]).max())
+        arms.append(np.abs(height[band & (angle > 15.0) & (angle < 21.0)]).max())
+    transverse, cusp = _slope(middles, axis), _slope(middles, arms)
+    print("fall with distance: on the track", round(transverse, 3), "on the arms", round(cusp, 3))
+    assert abs(transverse + 0.5) < 0.1
+    assert abs(cusp + 1.0 / 3.0) < 0.1
 
 
 def test_above_froude_half_the_highest_waves_narrow_the_outer_edge_stays(addon):
