@@ -3,9 +3,12 @@
 A simulation zone keeps the object's track: a point a frame where it was (in the water's own
 space, flattened), with the time, its speed, its heading and the distance it had come by then
 (`wake_time`, `wake_speed`, `wake_heading`, `wake_arc`); points older than `Keep` go. Each water
-point in the wake's zone (`_zone_nodes`: the others are left as they are) finds the track's
-point nearest it, and so its place in the track's frame: `x` metres
-behind the object along its track (turns included) and `y` across it.
+point in the wake's zone (`_zone_nodes`: the others are left as they are) finds its point of the
+track, and so its place in the track's frame: `x` metres behind the object along its track
+(turns included) and `y` across it. It does so in a few reads whatever the track's length: a
+48 x 48 grid over the zone's box knows each of its points' nearest track point
+(`_guess_nodes`), and from its grid point's a water point walks along the track to its own
+(`_walk`); no nearest-point search a water point, which made the cost grow with the track.
 
 Its height there is the stationary-phase Kelvin pattern of a source moving at the speed the
 object had there (deep water, `ω² = g k`). Waves running at `θ` to the track stand still in the
@@ -356,7 +359,6 @@ def _frame_nodes():
     nodes = {
         "position": Node("GeometryNodeInputPosition", 13),
         "p_flat": vmath("MULTIPLY", 14, "on the plane", b=(1.0, 1.0, 0.0)),
-        "nearest": Node("GeometryNodeSampleNearest", 15, {"domain": "POINT"}, label="nearest track point"),
         "t_position": Node("GeometryNodeInputPosition", 15, label="track position"),
         "t_time": _named("wake_time", "FLOAT", 15),
         "t_speed": _named("wake_speed", "FLOAT", 15),
@@ -387,8 +389,6 @@ def _frame_nodes():
     }
     links = (
         ("position:Position", "p_flat:#0"),
-        ("sim_out:Track", "nearest:Geometry"),
-        ("p_flat:Vector", "nearest:Sample Position"),
         *(
             link
             for key, source in (
@@ -401,7 +401,7 @@ def _frame_nodes():
             for link in (
                 ("sim_out:Track", f"{key}:Geometry"),
                 (source, f"{key}:Value"),
-                ("nearest:Index", f"{key}:Index"),
+                (TRACK_INDEX, f"{key}:Index"),
             )
         ),
         ("p_flat:Vector", "offset:#0"),
@@ -429,6 +429,192 @@ def _frame_nodes():
         ("first_arc:Min", "track_length:#1"),
     )
     return nodes, links
+
+
+def _walk(tag, geometry, start, steps, column):
+    """Nodes that find the point of a polyline (`geometry`'s points in order of time, `ord_dir`
+    the way to the newer) whose
+    segment a water point `p_flat` lies across, from the index `start` ("node:socket"), in
+    `steps` steps: each takes the segment to the newer point, `d`, and moves the index by
+    `(p - P) . d / |d|²` segments, rounded and kept within the points, if that point is
+    nearer. A few Sample Index reads a point instead of a nearest-point search (0.34 µs a point
+    on a 30 s track, BENCHMARKS): the cost no longer follows the track's length.
+    `{tag}_i{steps}:Result` is the index found."""
+    nodes = {
+        f"{tag}_count": Node(
+            "GeometryNodeAttributeDomainSize", column, {"component": "POINTCLOUD"}, label="points"
+        ),
+        f"{tag}_last": math("SUBTRACT", column + 1, "the oldest's index", b=1.0),
+        f"{tag}_where": Node("GeometryNodeInputPosition", column),
+    }
+    links = [
+        (geometry, f"{tag}_count:Geometry"),
+        (f"{tag}_count:Point Count", f"{tag}_last:#0"),
+    ]
+    index = start
+    for step in range(1, steps + 1):
+        n = f"{tag}_{step}"
+        c = column + 2 + 6 * (step - 1)
+        nodes |= {
+            n + "_at": _clamped_sample("FLOAT_VECTOR", c, f"step {step}: its point P"),
+            n + "_newer_i": math("ADD", c, "the newer one"),
+            n + "_newer": _clamped_sample("FLOAT_VECTOR", c + 1, "the newer point"),
+            n + "_d": vmath("SUBTRACT", c + 2, "d: the segment to it"),
+            n + "_v": vmath("SUBTRACT", c + 2, "p - P"),
+            n + "_vd": vmath("DOT_PRODUCT", c + 3, "(p - P) . d"),
+            n + "_dd": vmath("DOT_PRODUCT", c + 3, "|d|²"),
+            n + "_dd_e": math("ADD", c + 4, "never 0", b=1e-9),
+            n + "_t": math("DIVIDE", c + 4, "segments towards the newer"),
+            n + "_step": math("MULTIPLY", c + 5, "indices towards the newer"),
+            n + "_moved": math("ADD", c + 5, "index + that"),
+            n + "_round": math("ROUND", c + 5, "a point's index"),
+            n + "_low": math("MAXIMUM", c + 6, "within the points", b=0.0),
+            n + "_new": math("MINIMUM", c + 6, "the index stepped to"),
+            # Kept only if nearer: beyond a bend's centre the step would lead away.
+            n + "_new_at": _clamped_sample("FLOAT_VECTOR", c + 7, "its point"),
+            n + "_new_d": vmath("DISTANCE", c + 8, "p to it"),
+            n + "_old_d": vmath("LENGTH", c + 8, "p to P"),
+            n + "_nearer": math("LESS_THAN", c + 9, "nearer"),
+            f"{tag}_i{step}": Node(
+                "ShaderNodeMix", c + 10, {"data_type": "FLOAT"}, label=f"index after step {step}"
+            ),
+        }
+        links += [
+            (geometry, n + "_at:Geometry"),
+            (f"{tag}_where:Position", n + "_at:Value"),
+            (index, n + "_at:Index"),
+            (index, n + "_newer_i:#0"),
+            ("ord_dir:Value", n + "_newer_i:#1"),
+            (geometry, n + "_newer:Geometry"),
+            (f"{tag}_where:Position", n + "_newer:Value"),
+            (n + "_newer_i:Value", n + "_newer:Index"),
+            (n + "_newer:Value", n + "_d:#0"),
+            (n + "_at:Value", n + "_d:#1"),
+            ("p_flat:Vector", n + "_v:#0"),
+            (n + "_at:Value", n + "_v:#1"),
+            (n + "_v:Vector", n + "_vd:#0"),
+            (n + "_d:Vector", n + "_vd:#1"),
+            (n + "_d:Vector", n + "_dd:#0"),
+            (n + "_d:Vector", n + "_dd:#1"),
+            (n + "_dd:Value", n + "_dd_e:#0"),
+            (n + "_vd:Value", n + "_t:#0"),
+            (n + "_dd_e:Value", n + "_t:#1"),
+            (index, n + "_moved:#0"),
+            (n + "_t:Value", n + "_step:#0"),
+            ("ord_dir:Value", n + "_step:#1"),
+            (n + "_step:Value", n + "_moved:#1"),
+            (n + "_moved:Value", n + "_round:#0"),
+            (n + "_round:Value", n + "_low:#0"),
+            (n + "_low:Value", n + "_new:#0"),
+            (f"{tag}_last:Value", n + "_new:#1"),
+            (geometry, n + "_new_at:Geometry"),
+            (f"{tag}_where:Position", n + "_new_at:Value"),
+            (n + "_new:Value", n + "_new_at:Index"),
+            ("p_flat:Vector", n + "_new_d:#0"),
+            (n + "_new_at:Value", n + "_new_d:#1"),
+            (n + "_v:Vector", n + "_old_d:#0"),
+            (n + "_new_d:Value", n + "_nearer:#0"),
+            (n + "_old_d:Value", n + "_nearer:#1"),
+            (n + "_nearer:Value", f"{tag}_i{step}:Factor"),
+            (index, f"{tag}_i{step}:A"),
+            (n + "_new:Value", f"{tag}_i{step}:B"),
+        ]
+        index = f"{tag}_i{step}:Result"
+    return nodes, links
+
+
+GUESS_CELLS = 48  # the guess grid's points a side (48² nearest-point searches a frame)
+
+
+def _guess_nodes():
+    """Each water point's first guess at its track point, for `_walk`: a grid of 48 x 48
+    points over the wake's box finds its nearest track points (a search each, 2,304 a frame,
+    whatever the water), and each water point reads its grid point's (a few operations):
+    right at once on any track, however it bends, for the walk to finish."""
+    n = float(GUESS_CELLS)
+    nodes = {
+        "gg_index": Node("GeometryNodeInputIndex", 44, label="grid point"),
+        "gg_col": math("FLOORED_MODULO", 45, "its column", b=n),
+        "gg_row_f": math("DIVIDE", 45, "its row", b=n),
+        "gg_row": math("FLOOR", 46, "(whole)"),
+        "gg_cr": Node("ShaderNodeCombineXYZ", 47, label="column, row"),
+        "gg_extent": vmath("SUBTRACT", 44, "the box's size"),
+        "gg_ext_split": Node("ShaderNodeSeparateXYZ", 45, label="size"),
+        "gg_ext": math("MAXIMUM", 46, "its larger side"),
+        "gg_cell_f": math("DIVIDE", 47, "a grid cell", b=n - 1.0),
+        "gg_cell": math("MAXIMUM", 48, "(> 1 mm)", b=1e-3),
+        "gg_low": vmath("MULTIPLY", 47, "the box's corner, flat", b=(1.0, 1.0, 0.0)),
+        "gg_at": vmath("MULTIPLY_ADD", 48, "where the grid point is"),
+        "gg_points": Node("GeometryNodePoints", 49, values={"Count": GUESS_CELLS**2}, label="guess grid"),
+        "gg_where": Node("GeometryNodeInputPosition", 49),
+        "gg_nearest": Node("GeometryNodeSampleNearest", 50, {"domain": "POINT"}, label="its nearest"),
+        "gg_store": _store("wake_guess", "FLOAT", 51),
+        "gg_read": _named("wake_guess", "FLOAT", 51, "each grid point's"),
+        # Each water point's grid point.
+        "gg_rel": vmath("SUBTRACT", 46, "p - the corner"),
+        "gg_per_cell": math("DIVIDE", 47, "a cell's inverse", a=1.0),
+        "gg_cells": vmath("SCALE", 48, "in cells"),
+        "gg_half": vmath("ADD", 49, "+ half a cell", b=(0.5, 0.5, 0.0)),
+        "gg_round": vmath("SNAP", 49, "the nearest grid point", b=(1.0, 1.0, 1.0)),
+        "gg_clamp_lo": vmath("MAXIMUM", 50, "within the grid", b=(0.0, 0.0, 0.0)),
+        "gg_clamp_hi": vmath("MINIMUM", 51, "", b=(n - 1.0, n - 1.0, 0.0)),
+        "gg_split": Node("ShaderNodeSeparateXYZ", 52, label="column, row"),
+        "gg_flat_index": math("MULTIPLY_ADD", 53, "its index", b=n),
+        "gg_guess": _sample("FLOAT", 54, "the first guess"),
+    }
+    links = [
+        ("gg_index:Index", "gg_col:#0"),
+        ("gg_index:Index", "gg_row_f:#0"),
+        ("gg_row_f:Value", "gg_row:#0"),
+        ("gg_col:Value", "gg_cr:X"),
+        ("gg_row:Value", "gg_cr:Y"),
+        ("tz_high:Vector", "gg_extent:#0"),
+        ("tz_low:Vector", "gg_extent:#1"),
+        ("gg_extent:Vector", "gg_ext_split:Vector"),
+        ("gg_ext_split:X", "gg_ext:#0"),
+        ("gg_ext_split:Y", "gg_ext:#1"),
+        ("gg_ext:Value", "gg_cell_f:#0"),
+        ("gg_cell_f:Value", "gg_cell:#0"),
+        ("tz_low:Vector", "gg_low:#0"),
+        ("gg_cr:Vector", "gg_at:#0"),
+        ("gg_cell:Value", "gg_at:#1"),
+        ("gg_low:Vector", "gg_at:#2"),
+        ("gg_at:Vector", "gg_points:Position"),
+        ("sim_out:Track", "gg_nearest:Geometry"),
+        ("gg_where:Position", "gg_nearest:Sample Position"),
+        ("gg_points:Points", "gg_store:Geometry"),
+        ("gg_nearest:Index", "gg_store:Value"),
+        ("p_flat:Vector", "gg_rel:#0"),
+        ("gg_low:Vector", "gg_rel:#1"),
+        ("gg_cell:Value", "gg_per_cell:#1"),
+        ("gg_rel:Vector", "gg_cells:#0"),
+        ("gg_per_cell:Value", "gg_cells:Scale"),
+        ("gg_cells:Vector", "gg_half:#0"),
+        ("gg_half:Vector", "gg_round:#0"),
+        ("gg_round:Vector", "gg_clamp_lo:#0"),
+        ("gg_clamp_lo:Vector", "gg_clamp_hi:#0"),
+        ("gg_clamp_hi:Vector", "gg_split:Vector"),
+        ("gg_split:Y", "gg_flat_index:#0"),
+        ("gg_split:X", "gg_flat_index:#2"),
+        ("gg_store:Geometry", "gg_guess:Geometry"),
+        ("gg_read:Attribute", "gg_guess:Value"),
+        ("gg_flat_index:Value", "gg_guess:Index"),
+    ]
+    return nodes, links
+
+
+# Each water point's point of the track, and of its drifted copy (the trail's foam), walked to.
+TRACK_INDEX = "tw_i2:Result"
+DRIFTED_INDEX = "dw_i1:Result"
+
+
+def _walks():
+    nodes, links = _guess_nodes()
+    more_nodes, more_links = _walk("tw", "sim_out:Track", "gg_guess:Value", 2, 15)
+    nodes |= more_nodes
+    links += more_links
+    more_nodes, more_links = _walk("dw", "drifted:Geometry", TRACK_INDEX, 1, 19)
+    return nodes | more_nodes, links + more_links
 
 
 def _root(tag, tau, sign, column):
@@ -575,17 +761,10 @@ def _kelvin_nodes():
         "eta": math("MULTIPLY", 47, "height"),
         "lift": Node("ShaderNodeCombineXYZ", 48, label="up by the height"),
         # Only the points near the track are computed (a field is evaluated only where its
-        # node's selection holds): the box of the track and of its drifted copy, wider by the
-        # wedge at its far end, the beam, 2 m and the trail's spread over one Foam Fade; and the
-        # rings' box, wider by how far a ring runs out in its 12 s. Two compares a point.
+        # node's selection holds): the box round the zone (`_zone_nodes`) and the rings' box,
+        # wider by how far a ring runs out in its 12 s. Two compares a point.
         "kept": Node("GeometryNodeJoinGeometry", 40, label="track and its drift"),
-        "box": Node("GeometryNodeBoundBox", 41, label="their box"),
-        "wedge_width": math("MULTIPLY", 40, "track's length x tan 19.5°", b=0.3536),
-        "margin_b": math("ADD", 41, "+ beam"),
         "spread_far": math("MULTIPLY_ADD", 41, "trail's spread: 0.2 m/s x Foam Fade + 2 m", b=0.2, c=2.0),
-        "margin": math("ADD", 42, "margin"),
-        "low": vmath("SUBTRACT", 43, "box's low corner - margin"),
-        "high": vmath("ADD", 43, "box's high corner + margin"),
         "ring_box": Node("GeometryNodeBoundBox", 41, label="the rings' box"),
         "ring_reach": math("MULTIPLY_ADD", 41, "a ring's reach: group speed x 12 s + 2 λ", b=12.0),
         "ring_twice": math("MULTIPLY", 40, "2 λ", b=2.0),
@@ -677,17 +856,7 @@ def _kelvin_nodes():
         ("lift:Vector", "set:Offset"),
         ("sim_out:Track", "kept:Geometry"),
         ("drifted:Geometry", "kept:Geometry"),
-        ("kept:Geometry", "box:Geometry"),
-        ("track_length:Value", "wedge_width:#0"),
-        ("wedge_width:Value", "margin_b:#0"),
-        ("input:Beam", "margin_b:#1"),
         ("input:Foam Fade", "spread_far:#0"),
-        ("margin_b:Value", "margin:#0"),
-        ("spread_far:Value", "margin:#1"),
-        ("box:Min", "low:#0"),
-        ("margin:Value", "low:#1"),
-        ("box:Max", "high:#0"),
-        ("margin:Value", "high:#1"),
         ("sim_out:Rings", "ring_box:Geometry"),
         ("ring_lambda:Value", "ring_twice:#0"),
         ("ring_cg:Value", "ring_reach:#0"),
@@ -699,9 +868,9 @@ def _kelvin_nodes():
         ("ring_margin:Value", "ring_low:#1"),
         ("ring_box:Max", "ring_high:#0"),
         ("ring_margin:Value", "ring_high:#1"),
-        ("low:Vector", "all_low:#0"),
+        ("tz_low:Vector", "all_low:#0"),
         ("ring_low:Vector", "all_low:#1"),
-        ("high:Vector", "all_high:#0"),
+        ("tz_high:Vector", "all_high:#0"),
         ("ring_high:Vector", "all_high:#1"),
         ("all_low:Vector", "low_split:Vector"),
         ("all_high:Vector", "high_split:Vector"),
@@ -799,9 +968,6 @@ def _foam_nodes():
         "drift": vmath("SCALE", 18, "drifted downwind"),
         "drift_flat": vmath("MULTIPLY", 18, "on the plane", b=(1.0, 1.0, 0.0)),
         "drifted": Node("GeometryNodeSetPosition", 19, label="track, drifted"),
-        "d_nearest": Node(
-            "GeometryNodeSampleNearest", 20, {"domain": "POINT"}, label="nearest drifted point"
-        ),
         "d_position": Node("GeometryNodeInputPosition", 20),
         "d_at_position": _sample("FLOAT_VECTOR", 21, "where it drifted to"),
         # The trail's width and weight are worked out on the track's points, then sampled.
@@ -871,19 +1037,17 @@ def _foam_nodes():
         ("drift:Vector", "drift_flat:#0"),
         ("sim_out:Track", "drifted:Geometry"),
         ("drift_flat:Vector", "drifted:Offset"),
-        ("drifted:Geometry", "d_nearest:Geometry"),
-        ("p_flat:Vector", "d_nearest:Sample Position"),
         ("drifted:Geometry", "d_at_position:Geometry"),
         ("d_position:Position", "d_at_position:Value"),
-        ("d_nearest:Index", "d_at_position:Index"),
+        (DRIFTED_INDEX, "d_at_position:Index"),
         ("drifted:Geometry", "d_at_width:Geometry"),
         ("d_width:Value", "d_at_width:Value"),
-        ("d_nearest:Index", "d_at_width:Index"),
+        (DRIFTED_INDEX, "d_at_width:Index"),
         ("drifted:Geometry", "d_at_weight:Geometry"),
         ("trail_foam_full:Value", "d_at_weight:Value"),
-        ("d_nearest:Index", "d_at_weight:Index"),
-        ("d_nearest:Index", "d_i_back:#0"),
-        ("d_nearest:Index", "d_i_ahead:#0"),
+        (DRIFTED_INDEX, "d_at_weight:Index"),
+        (DRIFTED_INDEX, "d_i_back:#0"),
+        (DRIFTED_INDEX, "d_i_ahead:#0"),
         *(
             link
             for end, index in (("d_back_end", "d_i_back"), ("d_ahead_end", "d_i_ahead"))
@@ -942,8 +1106,16 @@ def _zone_nodes():
     and removed: the nearest-point searches, the costly part, run only inside it."""
     nodes = {
         "t_count": Node("GeometryNodeAttributeDomainSize", 40, {"component": "POINTCLOUD"}, label="points"),
-        "last_index": math("SUBTRACT", 41, "the oldest's index", b=1.0),
-        "oldest": _sample("FLOAT_VECTOR", 42, "the oldest point"),
+        "last_index": math("SUBTRACT", 41, "the last point's index", b=1.0),
+        # Which end is the newest: Join Geometry's order is not the links' order, so asked of
+        # the points' times (1: the last point is the newest, 0: the first).
+        "ord_first_t": _sample("FLOAT", 42, "the first point's time"),
+        "ord_last_t": _sample("FLOAT", 42, "the last point's time"),
+        "ord_up": math("GREATER_THAN", 43, "newest last"),
+        "ord_dir": math("MULTIPLY_ADD", 44, "towards the newer: +1 or -1", b=2.0, c=-1.0),
+        "ord_newest": math("MULTIPLY", 44, "the newest's index"),
+        "ord_oldest": math("SUBTRACT", 45, "the oldest's index"),
+        "oldest": _sample("FLOAT_VECTOR", 46, "the oldest point"),
         "chord": vmath("SUBTRACT", 43, "chord: back to the oldest"),
         "chord_len": vmath("LENGTH", 44, "chord's length"),
         "chord_dir": vmath("NORMALIZE", 44, "chord's direction"),
@@ -962,16 +1134,59 @@ def _zone_nodes():
         "ahead": math("MULTIPLY_ADD", 47, "L / 2 + beam + spread + 2 m", b=0.5),
         "s_lo": math("SUBTRACT", 49, "from ahead of the bow"),
         "s_hi": math("ADD", 49, "to past the oldest"),
-        "foam_m": math("MULTIPLY_ADD", 46, "trail's reach: 0.9 x Foam Fade + 2 m", b=0.9, c=2.0),
-        "foam_mb": math("ADD", 47, "+ beam"),
+        # A bent track's first arms reach past its oldest point along the chord (its heading
+        # there turned from the chord's): by as much as it strays.
+        "s_hi_bent": math("ADD", 50, "and its arms, bent"),
+        # The trail's foam, 0.7 exp(-age / Foam Fade) exp(-(d / w)²) with w = B / 3 + 0.1 m/s x
+        # age, is above 0.005 within 0.73 B + 0.42 m/s x Foam Fade of its line (at most, over its
+        # ages), and only while younger than ln(140) = 4.94 Foam Fades; the hull's within 0.75 B.
+        "foam_m": math("MULTIPLY_ADD", 46, "trail's reach: 0.42 m/s x Foam Fade + 1 m", b=0.42, c=1.0),
+        "foam_b": math("MULTIPLY", 46, "0.75 B", b=0.75),
+        "foam_mb": math("ADD", 47, "+ 0.75 B"),
+        "fb_oldest_t": _sample("FLOAT", 46, "the oldest point's time"),
+        "fb_duration": math("SUBTRACT", 47, "the track's seconds"),
+        "fb_duration_e": math("MAXIMUM", 48, "(> 0)", b=1e-3),
+        "fb_ages": math("MULTIPLY", 47, "the foam's life: 4.94 Foam Fades", b=4.94),
+        "fb_share": math("DIVIDE", 49, "its share of the track", clamp=True),
+        "fb_len": math("MULTIPLY", 50, "as much of its length"),
+        "fb_reach": math("ADD", 51, "from ahead of the bow"),
+        "z_young": math("LESS_THAN", 54, "where the foam is young enough"),
+        "z_band_young": math("MULTIPLY", 55, "near the trail, young"),
         "foam_w": math("ADD", 48, "+ strays: the trail's band"),
+        # The box round the zone: its wedge's four corners (ahead of the bow and past the
+        # oldest point, each side of the chord) and a square round the object (a chord of no
+        # length: a hull standing still).
+        "tz_n": vmath("CROSS_PRODUCT", 50, "across the chord", b=(0.0, 0.0, 1.0)),
+        "tz_far_w": math("MULTIPLY_ADD", 50, "the wedge's width past the oldest", b=0.38),
+        "tz_c_lo": vmath("SCALE", 51, "to ahead of the bow"),
+        "tz_c_hi": vmath("SCALE", 51, "to past the oldest"),
+        "tz_n_near": vmath("SCALE", 51, "half the width there"),
+        "tz_n_far": vmath("SCALE", 51, "half the width there"),
+        "tz_lo_at": vmath("ADD", 52, "ahead of the bow"),
+        "tz_hi_at": vmath("ADD", 52, "past the oldest"),
+        "tz_p1": vmath("ADD", 53, "corner"),
+        "tz_p2": vmath("SUBTRACT", 53, "corner"),
+        "tz_p3": vmath("ADD", 53, "corner"),
+        "tz_p4": vmath("SUBTRACT", 53, "corner"),
+        "tz_r": math("ADD", 52, "round the object"),
+        "tz_sq_lo": vmath("SUBTRACT", 53, "square's low corner"),
+        "tz_sq_hi": vmath("ADD", 53, "square's high corner"),
+        "tz_min_a": vmath("MINIMUM", 54, ""),
+        "tz_min_b": vmath("MINIMUM", 54, ""),
+        "tz_min_c": vmath("MINIMUM", 55, ""),
+        "tz_low": vmath("MINIMUM", 56, "the box: low"),
+        "tz_max_a": vmath("MAXIMUM", 54, ""),
+        "tz_max_b": vmath("MAXIMUM", 54, ""),
+        "tz_max_c": vmath("MAXIMUM", 55, ""),
+        "tz_high": vmath("MAXIMUM", 56, "the box: high"),
         # Each point in the box.
         "z_v": vmath("SUBTRACT", 50, "p - the object"),
         "z_s": vmath("DOT_PRODUCT", 51, "along the chord"),
         "z_cross": vmath("CROSS_PRODUCT", 51, "across"),
         "z_d": vmath("LENGTH", 52, "off the chord"),
         "z_sc": math("MAXIMUM", 52, "behind (> 0)", b=0.0),
-        "z_w": math("MULTIPLY_ADD", 53, "the wedge's width here", b=0.3536),
+        # tan 20.8°: the arms' Airy tail fades a little beyond 19.47°.
+        "z_w": math("MULTIPLY_ADD", 53, "the wedge's width here", b=0.38),
         "z_in_w": math("LESS_THAN", 54, "within it"),
         "z_after": math("GREATER_THAN", 54, "not ahead of the bow"),
         "z_before": math("LESS_THAN", 54, "not past the oldest"),
@@ -993,7 +1208,19 @@ def _zone_nodes():
         ("t_count:Point Count", "last_index:#0"),
         ("sim_out:Track", "oldest:Geometry"),
         ("t_position:Position", "oldest:Value"),
-        ("last_index:Value", "oldest:Index"),
+        ("sim_out:Track", "ord_first_t:Geometry"),
+        ("t_time:Attribute", "ord_first_t:Value"),
+        ("sim_out:Track", "ord_last_t:Geometry"),
+        ("t_time:Attribute", "ord_last_t:Value"),
+        ("last_index:Value", "ord_last_t:Index"),
+        ("ord_last_t:Value", "ord_up:#0"),
+        ("ord_first_t:Value", "ord_up:#1"),
+        ("ord_up:Value", "ord_dir:#0"),
+        ("ord_up:Value", "ord_newest:#0"),
+        ("last_index:Value", "ord_newest:#1"),
+        ("last_index:Value", "ord_oldest:#0"),
+        ("ord_newest:Value", "ord_oldest:#1"),
+        ("ord_oldest:Value", "oldest:Index"),
         ("oldest:Value", "chord:#0"),
         ("sim_out:Last", "chord:#1"),
         ("chord:Vector", "chord_len:#0"),
@@ -1026,7 +1253,25 @@ def _zone_nodes():
         ("beam_spread:Value", "s_hi:#1"),
         ("input:Foam Fade", "foam_m:#0"),
         ("foam_m:Value", "foam_mb:#0"),
-        ("input:Beam", "foam_mb:#1"),
+        ("input:Beam", "foam_b:#0"),
+        ("foam_b:Value", "foam_mb:#1"),
+        ("sim_out:Track", "fb_oldest_t:Geometry"),
+        ("t_time:Attribute", "fb_oldest_t:Value"),
+        ("ord_oldest:Value", "fb_oldest_t:Index"),
+        ("clock:Seconds", "fb_duration:#0"),
+        ("fb_oldest_t:Value", "fb_duration:#1"),
+        ("fb_duration:Value", "fb_duration_e:#0"),
+        ("input:Foam Fade", "fb_ages:#0"),
+        ("fb_ages:Value", "fb_share:#0"),
+        ("fb_duration_e:Value", "fb_share:#1"),
+        ("fb_share:Value", "fb_len:#0"),
+        ("track_length:Value", "fb_len:#1"),
+        ("fb_len:Value", "fb_reach:#0"),
+        ("ahead:Value", "fb_reach:#1"),
+        ("z_s:Value", "z_young:#0"),
+        ("fb_reach:Value", "z_young:#1"),
+        ("z_band:Value", "z_band_young:#0"),
+        ("z_young:Value", "z_band_young:#1"),
         ("foam_mb:Value", "foam_w:#0"),
         ("dev:Max", "foam_w:#1"),
         ("p_flat:Vector", "z_v:#0"),
@@ -1044,7 +1289,54 @@ def _zone_nodes():
         ("z_s:Value", "z_after:#0"),
         ("s_lo:Value", "z_after:#1"),
         ("z_s:Value", "z_before:#0"),
-        ("s_hi:Value", "z_before:#1"),
+        ("chord_dir:Vector", "tz_n:#0"),
+        ("s_hi_bent:Value", "tz_far_w:#0"),
+        ("w1:Value", "tz_far_w:#2"),
+        ("chord_dir:Vector", "tz_c_lo:#0"),
+        ("s_lo:Value", "tz_c_lo:Scale"),
+        ("chord_dir:Vector", "tz_c_hi:#0"),
+        ("s_hi_bent:Value", "tz_c_hi:Scale"),
+        ("tz_n:Vector", "tz_n_near:#0"),
+        ("w1:Value", "tz_n_near:Scale"),
+        ("tz_n:Vector", "tz_n_far:#0"),
+        ("tz_far_w:Value", "tz_n_far:Scale"),
+        ("sim_out:Last", "tz_lo_at:#0"),
+        ("tz_c_lo:Vector", "tz_lo_at:#1"),
+        ("sim_out:Last", "tz_hi_at:#0"),
+        ("tz_c_hi:Vector", "tz_hi_at:#1"),
+        ("tz_lo_at:Vector", "tz_p1:#0"),
+        ("tz_n_near:Vector", "tz_p1:#1"),
+        ("tz_lo_at:Vector", "tz_p2:#0"),
+        ("tz_n_near:Vector", "tz_p2:#1"),
+        ("tz_hi_at:Vector", "tz_p3:#0"),
+        ("tz_n_far:Vector", "tz_p3:#1"),
+        ("tz_hi_at:Vector", "tz_p4:#0"),
+        ("tz_n_far:Vector", "tz_p4:#1"),
+        ("ahead:Value", "tz_r:#0"),
+        ("w1:Value", "tz_r:#1"),
+        ("sim_out:Last", "tz_sq_lo:#0"),
+        ("tz_r:Value", "tz_sq_lo:#1"),
+        ("sim_out:Last", "tz_sq_hi:#0"),
+        ("tz_r:Value", "tz_sq_hi:#1"),
+        ("tz_p1:Vector", "tz_min_a:#0"),
+        ("tz_p2:Vector", "tz_min_a:#1"),
+        ("tz_p3:Vector", "tz_min_b:#0"),
+        ("tz_p4:Vector", "tz_min_b:#1"),
+        ("tz_min_a:Vector", "tz_min_c:#0"),
+        ("tz_min_b:Vector", "tz_min_c:#1"),
+        ("tz_min_c:Vector", "tz_low:#0"),
+        ("tz_sq_lo:Vector", "tz_low:#1"),
+        ("tz_p1:Vector", "tz_max_a:#0"),
+        ("tz_p2:Vector", "tz_max_a:#1"),
+        ("tz_p3:Vector", "tz_max_b:#0"),
+        ("tz_p4:Vector", "tz_max_b:#1"),
+        ("tz_max_a:Vector", "tz_max_c:#0"),
+        ("tz_max_b:Vector", "tz_max_c:#1"),
+        ("tz_max_c:Vector", "tz_high:#0"),
+        ("tz_sq_hi:Vector", "tz_high:#1"),
+        ("s_hi:Value", "s_hi_bent:#0"),
+        ("w0:Value", "s_hi_bent:#1"),
+        ("s_hi_bent:Value", "z_before:#1"),
         ("z_in_w:Value", "z_k1:#0"),
         ("z_after:Value", "z_k1:#1"),
         ("z_k1:Value", "z_kelvin:#0"),
@@ -1059,7 +1351,7 @@ def _zone_nodes():
         ("r_in:Boolean", "z_waves:#1"),
         ("z_d:Value", "z_band:#0"),
         ("foam_w:Value", "z_band:#1"),
-        ("z_band:Value", "z_foam:#0"),
+        ("z_band_young:Value", "z_foam:#0"),
         ("z_kelvin:Value", "z_foam:#1"),
         ("z_waves:Value", "zone:#0"),
         ("z_foam:Value", "zone:#1"),
@@ -1125,7 +1417,7 @@ def _units_nodes():
 
 def _spec():
     nodes, links = {}, []
-    for part in (_track_nodes, _ring_nodes, _frame_nodes, _kelvin_nodes, _foam_nodes, _zone_nodes):
+    for part in (_track_nodes, _ring_nodes, _frame_nodes, _kelvin_nodes, _foam_nodes, _zone_nodes, _walks):
         more_nodes, more_links = part()
         assert not set(more_nodes) & set(nodes), set(more_nodes) & set(nodes)  # one key, one node
         nodes |= more_nodes
@@ -1138,7 +1430,7 @@ def _spec():
     links += more_links
     return GroupSpec(
         name=NAME,
-        version=3,
+        version=4,
         description="The Kelvin wake, rings and foam of one moving object (its track kept by a "
         "simulation zone)",
         tree_type="GeometryNodeTree",
