@@ -30,11 +30,12 @@ The tile's mean is 1, so the light is moved around, not added (exact for Caustic
 import math as _math
 
 from . import bump_uv, caustics_map, wind_frame
+from .physics import WATER_IOR
 from .spec import CAUSTICS_IMAGE, GroupSpec, Node, Socket, attribute, group_node, math, pass_inputs, vmath
 
 NAME = "Water Surface Caustics"
 VERSION = 1
-IOR = 1.33
+IOR = WATER_IOR
 FADE_IN = 0.3  # metres: the ripples need some depth to focus the light
 FADE_DEPTH = 8.0  # metres: deeper, the lines blur and the pattern fades (1 / e at this depth)
 MIN_COS = 0.05  # grazing rays: offsets capped at 20 depths

@@ -23,11 +23,12 @@ import functools
 import numpy as np
 
 from .bump_map import surface_normals, water_height_field
+from .physics import WATER_IOR
 
 CAUSTICS_MAP_VERSION = 1
 """Bump whenever the generated pixels change, so packed images get made again."""
 
-IOR = 1.33
+IOR = WATER_IOR
 DEPTH = 0.25
 """How far below the surface the bed lies, in tile widths, for the stored pattern: past the
 first focus of the tile's main ripples, where the lines are sharp and the cells dim."""

@@ -41,11 +41,11 @@ where it moves through the water, and along the track behind it, drifting with `
 (metres a second, downwind), spreading and fading with time.
 """
 
+from .physics import KELVIN_TAN, KELVIN_ZONE_TAN, SURFACE_TENSION, G
 from .spec import GroupSpec, Node, Socket, math, vmath
 
 NAME = "Water Wake"
 FOAM_ATTRIBUTE = "water_wake_foam"
-G = 9.81
 
 
 def _named(name, data_type, column, label=""):
@@ -227,10 +227,10 @@ def _ring_nodes():
         "ring_lambda": math("MULTIPLY", 22, "λ = 2 B", b=2.0),
         "ring_k": math("DIVIDE", 23, "k = 2π / λ", a=2.0 * 3.141592653589793),
         "ring_k2": math("MULTIPLY", 24, "k²"),
-        "ring_sk2": math("MULTIPLY_ADD", 25, "g + (σ/ρ) k²", b=7.3e-5, c=G),
+        "ring_sk2": math("MULTIPLY_ADD", 25, "g + (σ/ρ) k²", b=SURFACE_TENSION, c=G),
         "ring_w2": math("MULTIPLY", 26, "ω² = k (g + (σ/ρ) k²)"),
         "ring_w": math("SQRT", 27, "ω"),
-        "ring_cg_num": math("MULTIPLY_ADD", 25, "g + 3 (σ/ρ) k²", b=3.0 * 7.3e-5, c=G),
+        "ring_cg_num": math("MULTIPLY_ADD", 25, "g + 3 (σ/ρ) k²", b=3.0 * SURFACE_TENSION, c=G),
         "ring_cg_den": math("MULTIPLY", 28, "2 ω", b=2.0),
         "ring_cg": math("DIVIDE", 29, "group speed dω/dk"),
         "ring_front": math("MULTIPLY", 30, "front: group speed x age"),
@@ -1129,7 +1129,7 @@ def _zone_nodes():
         "arc_extra": math("SUBTRACT", 45, "track's length - chord's"),
         "arc_extra_p": math("MAXIMUM", 46, "(> 0)", b=0.0),
         "beam_spread": math("ADD", 45, "beam + spread + 2 m"),
-        "w0": math("MULTIPLY_ADD", 47, "strays + the extra length's wedge", b=0.3536),
+        "w0": math("MULTIPLY_ADD", 47, "strays + the extra length's wedge", b=KELVIN_TAN),
         "w1": math("ADD", 48, "the wedge's width at the object"),
         "ahead": math("MULTIPLY_ADD", 47, "L / 2 + beam + spread + 2 m", b=0.5),
         "s_lo": math("SUBTRACT", 49, "from ahead of the bow"),
@@ -1157,7 +1157,7 @@ def _zone_nodes():
         # oldest point, each side of the chord) and a square round the object (a chord of no
         # length: a hull standing still).
         "tz_n": vmath("CROSS_PRODUCT", 50, "across the chord", b=(0.0, 0.0, 1.0)),
-        "tz_far_w": math("MULTIPLY_ADD", 50, "the wedge's width past the oldest", b=0.38),
+        "tz_far_w": math("MULTIPLY_ADD", 50, "the wedge's width past the oldest", b=KELVIN_ZONE_TAN),
         "tz_c_lo": vmath("SCALE", 51, "to ahead of the bow"),
         "tz_c_hi": vmath("SCALE", 51, "to past the oldest"),
         "tz_n_near": vmath("SCALE", 51, "half the width there"),
@@ -1186,7 +1186,7 @@ def _zone_nodes():
         "z_d": vmath("LENGTH", 52, "off the chord"),
         "z_sc": math("MAXIMUM", 52, "behind (> 0)", b=0.0),
         # tan 20.8°: the arms' Airy tail fades a little beyond 19.47°.
-        "z_w": math("MULTIPLY_ADD", 53, "the wedge's width here", b=0.38),
+        "z_w": math("MULTIPLY_ADD", 53, "the wedge's width here", b=KELVIN_ZONE_TAN),
         "z_in_w": math("LESS_THAN", 54, "within it"),
         "z_after": math("GREATER_THAN", 54, "not ahead of the bow"),
         "z_before": math("LESS_THAN", 54, "not past the oldest"),

@@ -61,6 +61,7 @@ import math as _math
 from dataclasses import replace as _replace
 
 from . import bump_uv, caustics, foam_map, wind_frame
+from .physics import WATER_IOR
 from .spec import (
     BUMP_IMAGE,
     FOAM_IMAGE,
@@ -81,7 +82,7 @@ VERSION = 6  # 4: caustics; 5: depth colour, foam and caustics only in the varia
 LIT_FOAM_SINCE = (4, 5, 0)  # the first LTS whose EEVEE keeps traced refraction beside a diffuse closure
 MAX_BUMP_LAYERS = 4
 FOAM_NAME = "Water Surface Foam Coverage"
-IOR = 1.33
+IOR = WATER_IOR
 
 # The attributes the surroundings modifier stores on the water's points (all floats, per point).
 DEPTH_ATTRIBUTE = "water_depth"  # metres straight down to the bed; 1000 where nothing is below
@@ -324,7 +325,7 @@ def _weight_nodes():
         # and gives 1 past the critical angle (total internal reflection), so the refraction shows
         # the sky inside Snell's window and the reflection the water below outside it; no dull
         # colour, glint or colour by depth (they are the view from above).
-        "fresnel_in": Node("ShaderNodeFresnel", 21, values={"IOR": 1.33}, label="Fresnel from below"),
+        "fresnel_in": Node("ShaderNodeFresnel", 21, values={"IOR": IOR}, label="Fresnel from below"),
         "under_reflect": math("MULTIPLY", 22, "from below: reflection"),
         "under_clear": math("SUBTRACT", 22, "1 - that", a=1.0),
         "under_refract": math("MULTIPLY", 23, "from below: refraction"),
@@ -654,7 +655,7 @@ FULL_SPEC = GroupSpec(
             "ShaderNodeBsdfRefraction",
             26,
             {"distribution": "GGX"},
-            {"Roughness": 0.0, "IOR": 1.33},
+            {"Roughness": 0.0, "IOR": IOR},
             label="refraction",
         ),
         "emission": Node("ShaderNodeEmission", 26, values={"Strength": 1.0}, label="dull colour + glint"),

@@ -7,7 +7,9 @@ sets Blender's Ocean modifier from them.
 
 import math
 
-GRAVITY = 9.81
+from ..nodes.physics import G
+
+GRAVITY = G
 TILE_WAVES = 6.0
 MIN_TILE = 20
 MAX_TILE = 4000
