@@ -89,15 +89,6 @@ def _sample(data_type, column, label):
     return Node("GeometryNodeSampleIndex", column, {"data_type": data_type, "domain": "POINT"}, label=label)
 
 
-# The track's attributes, kept on its points.
-TRACK = (
-    ("wake_time", "FLOAT"),
-    ("wake_speed", "FLOAT"),
-    ("wake_arc", "FLOAT"),
-    ("wake_heading", "FLOAT_VECTOR"),
-)
-
-
 def _track_nodes():
     """The simulation zone: one point a step where the object is, the old ones dropped."""
     nodes = {

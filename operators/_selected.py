@@ -53,3 +53,16 @@ def run_on_selected(operator, context, act, errors, nothing, floating_first=True
         return {"CANCELLED"}
     operator.report({"INFO"}, "; ".join(done))
     return {"FINISHED"}
+
+
+def take_off_selected(operator, context, take_off):
+    """What Stop Floating, Let Water In and Remove Wake share: `take_off(obj)` on each selected
+    object, the ones that cannot be edited (linked, overridden) said and left alone."""
+    changes = []
+    for obj in context.selected_objects:
+        try:
+            changes += take_off(obj)
+        except NotEditableError as error:
+            operator.report({"WARNING"}, str(error))
+    operator.report({"INFO"}, "; ".join(changes) or "no change")
+    return {"FINISHED"}

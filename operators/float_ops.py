@@ -3,9 +3,9 @@
 import bpy
 
 from ..water import floating
-from ..water.editable import NotEditableError, why_not_editable
+from ..water.editable import why_not_editable
 from . import _poll
-from ._selected import not_water, run_on_selected
+from ._selected import not_water, run_on_selected, take_off_selected
 
 
 def _metres(name, description, soft_max):
@@ -102,11 +102,4 @@ class OBJECT_OT_water_float_stop(bpy.types.Operator):
         return True
 
     def execute(self, context):
-        changes = []
-        for obj in context.selected_objects:
-            try:
-                changes += floating.stop_floating(obj)
-            except NotEditableError as error:
-                self.report({"WARNING"}, str(error))
-        self.report({"INFO"}, "; ".join(changes) or "no change")
-        return {"FINISHED"}
+        return take_off_selected(self, context, floating.stop_floating)

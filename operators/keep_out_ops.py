@@ -4,9 +4,8 @@ water again."""
 import bpy
 
 from ..water import keep_out
-from ..water.editable import NotEditableError
 from . import _poll
-from ._selected import not_water, run_on_selected
+from ._selected import not_water, run_on_selected, take_off_selected
 
 
 class OBJECT_OT_water_keep_out(bpy.types.Operator):
@@ -46,11 +45,4 @@ class OBJECT_OT_water_let_in(bpy.types.Operator):
         return True
 
     def execute(self, context):
-        changes = []
-        for obj in context.selected_objects:
-            try:
-                changes += keep_out.let_water_in(obj)
-            except NotEditableError as error:
-                self.report({"WARNING"}, str(error))
-        self.report({"INFO"}, "; ".join(changes) or "no change")
-        return {"FINISHED"}
+        return take_off_selected(self, context, keep_out.let_water_in)

@@ -6,7 +6,7 @@ import bpy
 from ..water import wake
 from ..water.editable import NotEditableError
 from . import _poll
-from ._selected import not_water, run_on_selected
+from ._selected import not_water, run_on_selected, take_off_selected
 
 
 class OBJECT_OT_water_wake_add(bpy.types.Operator):
@@ -53,14 +53,7 @@ class OBJECT_OT_water_wake_remove(bpy.types.Operator):
         return True
 
     def execute(self, context):
-        changes = []
-        for obj in context.selected_objects:
-            try:
-                changes += wake.remove_wake_source(obj)
-            except NotEditableError as error:
-                self.report({"WARNING"}, str(error))
-        self.report({"INFO"}, "; ".join(changes) or "no change")
-        return {"FINISHED"}
+        return take_off_selected(self, context, wake.remove_wake_source)
 
 
 class OBJECT_OT_water_wake_bake(bpy.types.Operator):
