@@ -2,10 +2,10 @@
 
 The `open_sea` preset (12 m/s, an 8 s swell, 385 x 385 points) alone, with one empty on a
 Shrinkwrap constraint onto it (how objects floated by their origin before: Blender builds the
-sea's ray-cast tree each frame), and with a 25 x 6 x 4 m hull floating by its footprint (21
-probes, `water/float_rig.py`). Milliseconds a frame over 24 frames (`frame_set`), in 5
-interleaved rounds; ratios to the sea alone, round by round, median and range. Run with
-`tools/bench float_cost`.
+sea's ray-cast tree each frame), with a 25 x 6 x 4 m hull floating by its footprint (21 probes
+dropped onto its patch of the sea, `water/float_rig.py`), and with ten of them. Milliseconds a
+frame over 24 frames (`frame_set`), in 5 interleaved rounds; ratios to the sea alone, round by
+round, median and range. Run with `tools/bench float_cost`.
 """
 
 import statistics
@@ -19,13 +19,13 @@ FRAMES = 24
 ROUNDS = 5
 
 
-def hull(bpy, scene):
+def hull(bpy, scene, at=(14.0, -9.0)):
     mesh = bpy.data.meshes.new("Hull")
     corners = [(x, y, z) for x in (-12.5, 12.5) for y in (-3.0, 3.0) for z in (-2.0, 2.0)]
     faces = [(0, 1, 3, 2), (4, 6, 7, 5), (0, 4, 5, 1), (2, 3, 7, 6), (0, 2, 6, 4), (1, 5, 7, 3)]
     mesh.from_pydata(corners, [], faces)
     obj = bpy.data.objects.new("Hull", mesh)
-    obj.location, obj.rotation_euler = (14.0, -9.0, 6.0), (0.0, 0.0, 0.6)
+    obj.location, obj.rotation_euler = (*at, 6.0), (0.0, 0.0, 0.6)
     scene.collection.objects.link(obj)
     return obj
 
@@ -50,15 +50,20 @@ def main():
     wrap = probe.constraints.new("SHRINKWRAP")
     wrap.target, wrap.shrinkwrap_type, wrap.project_axis = sea, "PROJECT", "NEG_Z"
     wrap.use_project_opposite = True
-    boat = hull(bpy, scene)
-    api.float_on_water(boat, sea, draft=1.5)
-    rig = [o for o in bpy.data.objects if o.get("water_surface_float_rig")]
+    fleet = []  # each hull and its rig
+    for index in range(10):
+        before = {o for o in bpy.data.objects if o.get("water_surface_float_rig")}
+        boat = hull(bpy, scene, at=(14.0 - 40.0 * (index % 5), -9.0 + 30.0 * (index // 5)))
+        api.float_on_water(boat, sea, draft=1.5, wake=False)
+        rig = [o for o in bpy.data.objects if o.get("water_surface_float_rig") and o not in before]
+        fleet.append([boat, *rig])
     cases = {
         "the open sea alone": (),
         "+ one Shrinkwrap onto it (floating by the origin)": (probe,),
-        "+ a hull floating by its footprint (its rig: 23 empties)": (boat, *rig),
+        "+ a hull floating by its footprint (its rig: 23 empties and its patch)": tuple(fleet[0]),
+        "+ ten hulls floating by their footprints": tuple(o for boat in fleet for o in boat),
     }
-    extras = [probe, boat, *rig]
+    extras = [probe, *(o for boat in fleet for o in boat)]
     times = {name: [] for name in cases}
     for _round in range(ROUNDS):
         for name, shown in cases.items():

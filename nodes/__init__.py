@@ -7,6 +7,7 @@ This package's descriptions (`SPECS`) are plain data and import without Blender;
 from . import (
     bump_uv,
     caustics,
+    float_patch,
     keep_out,
     ocean,
     sea_fade,
@@ -32,6 +33,7 @@ SPECS = {
         surroundings.SAMPLE_SPEC,
         keep_out.SPEC,
         wake.SPEC,
+        float_patch.SPEC,
     )
 }
 

@@ -220,9 +220,10 @@ def test_stop_a_copy_and_a_deleted_hull_leave_nothing_behind(scene, tmp_path):
     sea = _sea(scene, period=8.0)
     hull = _hull(scene)
     _api().float_on_water(hull, sea, draft=DRAFT)
-    assert len(_rig_objects()) == 23  # anchor, pose, 21 probes
+    assert len(_rig_objects()) == 24  # anchor, patch, pose, 21 probes
     assert _api().stop_floating(hull) == ["'Hull' no longer floats", "'Hull' leaves no wake on 'Sea'"]
     assert _rig_objects() == [] and not hull.constraints
+    assert not [m for m in bpy.data.meshes if "Float Patch" in m.name], "the patch's mesh went too"
     assert not harness.addon("water.wake").wake_modifiers(sea), "the wake floating added went too"
     assert hull.animation_data is None or hull.animation_data.action is None
     assert "Water Float Rigs" not in bpy.data.collections
@@ -233,9 +234,9 @@ def test_stop_a_copy_and_a_deleted_hull_leave_nothing_behind(scene, tmp_path):
     floating = harness.addon("water.floating")
     assert "a copy" in floating.rig_out_of_date(copy)
     _api().float_on_water(copy, sea)
-    assert len(_rig_objects()) == 46 and floating.rig_out_of_date(hull) is None
+    assert len(_rig_objects()) == 48 and floating.rig_out_of_date(hull) is None
     _api().stop_floating(copy)
-    assert len(_rig_objects()) == 23 and floating.rig_out_of_date(hull) is None
+    assert len(_rig_objects()) == 24 and floating.rig_out_of_date(hull) is None
 
     bpy.data.objects.remove(hull)
     path = tmp_path / "deleted.blend"
@@ -243,6 +244,7 @@ def test_stop_a_copy_and_a_deleted_hull_leave_nothing_behind(scene, tmp_path):
     assert _rig_objects() == []
     bpy.ops.wm.open_mainfile(filepath=str(path))
     assert _rig_objects() == [] and "Water Float Rigs" not in bpy.data.collections
+    assert not [m for m in bpy.data.meshes if "Float Patch" in m.name]
 
 
 @pytest.mark.lts
@@ -352,3 +354,64 @@ def test_it_follows_a_hull_carried_by_a_parent_or_a_follow_path(scene):
                 f"probes {centre.x:.2f}, {centre.y:.2f}"
             )
             assert (centre.xy - where.xy).length < 0.05
+
+
+def _poses(scene, hull, frames):
+    """(heave z, roll x, pitch y in degrees) of the evaluated hull at each frame, stepped in order."""
+    found = []
+    for frame in range(1, max(frames) + 1):
+        scene.frame_set(frame)
+        if frame in frames:
+            matrix = hull.evaluated_get(bpy.context.evaluated_depsgraph_get()).matrix_world
+            euler = matrix.to_euler()
+            found.append((matrix.translation.z, math.degrees(euler.x), math.degrees(euler.y)))
+    return np.array(found)
+
+
+@pytest.mark.parametrize("kind", ["open sea, wind sea", "lake with waves", "seeds' ocean"])
+def test_the_probes_on_their_patch_ride_as_on_the_whole_water(scene, kind):
+    """Issue 39: the probes drop onto a patch of the water round the hull (its ray-cast tree a
+    few hundred triangles, not the whole sea's), and the hull heaves, rolls and pitches as it
+    did on the whole water, within 1 cm and 0.1°: a hull running and turning across choppy
+    waves, on a turned water, its probes then dropped onto the water itself."""
+    if kind == "open sea, wind sea":
+        water = _sea(scene, period=8.0, wind_sea=True)
+    else:
+        preset = "lake" if kind == "lake with waves" else "ocean"
+        water = (
+            _api().add_water(scene, preset=preset, size=80.0, resolution=161, see_surroundings=False).object
+        )
+        if kind == "lake with waves":
+            _api().add_waves(water)
+    water.rotation_euler.z = 0.4
+    hull = _hull(scene, location=(4.0, -3.0, 2.0))
+    for frame, where, turn in ((1, (4.0, -3.0), 0.0), (49, (14.0, 4.0), 0.9)):
+        hull.location = (*where, 2.0)
+        hull.rotation_euler = (0.0, 0.0, YAW + turn)
+        hull.keyframe_insert("location", frame=frame)
+        hull.keyframe_insert("rotation_euler", frame=frame)
+    _api().float_on_water(hull, water, draft=DRAFT, wake=False)
+    probes = [o for o in bpy.data.objects if o.get("water_surface_float_rig") == "probe"]
+    (patch,) = {c.target for p in probes for c in p.constraints if c.type == "SHRINKWRAP"}
+    assert patch.get("water_surface_float_rig") == "patch"
+    frames = (1, 13, 25, 37, 49)
+    on_patch = _poses(scene, hull, frames)
+    depsgraph = bpy.context.evaluated_depsgraph_get()
+    triangles = len(patch.evaluated_get(depsgraph).data.loop_triangles)
+    all_triangles = len(water.evaluated_get(depsgraph).data.loop_triangles)
+    for probe in probes:
+        probe.constraints["Water Float Probe"].target = water
+    on_water = _poses(scene, hull, frames)
+    off = np.abs(on_patch - on_water)
+    print(
+        kind,
+        "patch:",
+        triangles,
+        "triangles; off by",
+        off.max(axis=0),
+        "(m, °, °); moved",
+        np.ptp(on_water, axis=0),
+    )
+    assert triangles < 0.2 * all_triangles
+    assert off[:, 0].max() < 0.01 and off[:, 1:].max() < 0.1
+    assert np.ptp(on_water[:, 0]) > 0.05 or kind == "lake with waves"  # the water did move it

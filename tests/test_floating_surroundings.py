@@ -47,6 +47,8 @@ def test_floating_a_gathered_boat_leaves_it_out_and_makes_no_cycle(boat_water):
     # Gathering again (the panel's Surroundings button) keeps it out.
     _api().set_surroundings(water)
     assert boat.name not in collection.objects and bed.name in collection.objects
+    # Nor does it gather the rig's patch (cut from the water's own surface: a cycle too).
+    assert not [o.name for o in collection.objects if o.get("water_surface_float_rig")]
     assert "Dependency cycle" not in _evaluate(scene)
 
 

@@ -13,7 +13,8 @@ Shrinkwrap, named as the add-on named them and aiming at the same water.
 
 from .values import is_water
 
-RIG_KEY = "water_surface_float_rig"  # on a rig's empties (float_rig.py): "pose" or "probe"
+RIG_KEY = "water_surface_float_rig"  # on a rig's objects (float_rig.py): "pose", "probe", "patch", ...
+PATCH_WATER_KEY = "water_surface_float_water"  # on a rig's patch: the water it is cut from
 _KINDS = {"float": ("SHRINKWRAP", "COPY_LOCATION"), "tilt": ("SHRINKWRAP", "COPY_ROTATION")}
 
 FLOAT = "Water Float"
@@ -95,8 +96,11 @@ def water_of(target):
             if probe is None or probe.get(RIG_KEY) != "probe":
                 continue
             for found in probe.constraints:
-                if found.type == "SHRINKWRAP" and found.target is not None and is_water(found.target):
-                    return found.target
+                surface = found.target if found.type == "SHRINKWRAP" else None
+                if surface is not None and surface.get(RIG_KEY) == "patch":
+                    surface = surface.get(PATCH_WATER_KEY)
+                if surface is not None and is_water(surface):
+                    return surface
     return None
 
 

@@ -8,7 +8,10 @@ For a floating object the add-on makes, in a hidden collection `RIG_COLLECTION`:
   makes any reading of an object's transform wait for all its constraints, the float's too, so
   probes placed from the object would close a dependency cycle;
 * probes: empties parented to the anchor over the object's footprint (`footprint_math`), each
-  dropped onto the water's evaluated surface, straight down or up, by a Shrinkwrap constraint;
+  dropped onto the water's evaluated surface, straight down or up, by a Shrinkwrap constraint:
+  onto a patch of it, a hidden mesh with the water's transform whose `Water Float Patch`
+  modifier keeps the water's evaluated surface round the anchor only (a Shrinkwrap builds a
+  ray-cast tree of all its target's mesh every frame: the whole sea's cost 4.65x the sea alone);
 * a pose: an empty whose Z is where the origin belongs (the plane fitted to the probes' heights,
   at the origin, less the keel's depth below the origin and the draft) and whose X and Y
   rotations are that plane's tilt in the object's own axes, by simple-expression drivers that
@@ -21,10 +24,15 @@ role); the anchor also names its object (`OWNER_KEY`), so a rig whose object was
 found and removed (`remove_lost_rigs`).
 """
 
-import bpy
+import math
 
-from . import footprint_math
-from .float_constraints import RIG_KEY
+import bpy
+import numpy as np
+
+from ..nodes import SPECS, float_patch
+from ..nodes.builder import ensure_group
+from . import footprint_math, waves
+from .float_constraints import PATCH_WATER_KEY, RIG_KEY
 
 RIG_COLLECTION = "Water Float Rigs"
 OWNER_KEY = "water_surface_float_owner"  # on the anchor: the floating object
@@ -176,11 +184,74 @@ def _weighted_sum(weights, constant=0.0, room=12):
     raise ValueError("too many probes for one driver expression")
 
 
-def _drop_onto(probe, water):
-    """Shrinkwrap: the probe onto the water's evaluated surface, straight down or up."""
+# Beyond the footprint the patch keeps this much of the water each way: the probes stand over
+# the footprint (they do not tilt with the hull), and the waves' sideways displacement (the open
+# sea's choppiness, a few metres at most at the swell it takes) stays within it.
+PATCH_MARGIN = 3.0  # metres
+
+
+def _patch(obj, water, anchor, collection, reach):
+    """The piece of `water`'s evaluated surface within `reach` metres of the anchor (each way),
+    for the probes to drop onto (see the module's docstring)."""
+    name = f"{obj.name} Float Patch"
+    patch = bpy.data.objects.new(name, bpy.data.meshes.new(name))
+    patch[RIG_KEY] = "patch"
+    patch[PATCH_WATER_KEY] = water
+    patch.display_type = "WIRE"
+    patch.hide_render = True
+    collection.objects.link(patch)
+    same_place = patch.constraints.new("COPY_TRANSFORMS")
+    same_place.name = "Water Float Patch"
+    same_place.target = water
+    modifier = patch.modifiers.new(float_patch.NAME, "NODES")
+    modifier.node_group = ensure_group(SPECS[float_patch.NAME], SPECS)
+    waves.set_wave_input(modifier, "Water", water)
+    waves.set_wave_input(modifier, "Anchor", anchor)
+    waves.set_wave_input(modifier, "Radius", reach)
+    return patch
+
+
+def _cell(water):
+    """The water's cell in metres: the median length of its evaluated mesh's edges (a coarse open
+    sea's are metres long; its far ring's fewer, longer edges do not move the median)."""
+    mesh = water.evaluated_get(bpy.context.evaluated_depsgraph_get()).data
+    if not mesh.edges:
+        return 0.0
+    points = np.empty(len(mesh.vertices) * 3)
+    mesh.vertices.foreach_get("co", points)
+    ends = np.empty(len(mesh.edges) * 2, dtype=np.int64)
+    mesh.edges.foreach_get("vertices", ends)
+    points, ends = points.reshape(-1, 3), ends.reshape(-1, 2)
+    lengths = np.linalg.norm(points[ends[:, 0]] - points[ends[:, 1]], axis=1)
+    return float(np.median(lengths)) * max(abs(water.scale.x), abs(water.scale.y), 1e-6)
+
+
+def patches_of(probes):
+    """The patches the probes drop onto."""
+    found = []
+    for probe in probes:
+        for constraint in probe.constraints:
+            target = constraint.target if constraint.type == "SHRINKWRAP" else None
+            if target is not None and target.get(RIG_KEY) == "patch" and target not in found:
+                found.append(target)
+    return found
+
+
+def _remove_objects(objects):
+    for obj in objects:
+        if obj is None or obj.name not in bpy.data.objects:
+            continue
+        data = obj.data if obj.get(RIG_KEY) == "patch" else None
+        bpy.data.objects.remove(obj)
+        if data is not None and data.users == 0:
+            bpy.data.meshes.remove(data)
+
+
+def _drop_onto(probe, surface):
+    """Shrinkwrap: the probe onto the water's evaluated surface (its patch), straight down or up."""
     constraint = probe.constraints.new("SHRINKWRAP")
     constraint.name = "Water Float Probe"
-    constraint.target = water
+    constraint.target = surface
     constraint.shrinkwrap_type = "PROJECT"
     constraint.project_axis = "NEG_Z"
     constraint.project_axis_space = "WORLD"
@@ -203,13 +274,17 @@ def build(obj, water, scene, own_constraints, draft=None, length=None, beam=None
     weights = footprint_math.plane_weights(points)
     collection = rig_collection(scene)
     anchor = _anchor(obj, collection, own_constraints)
+    # The footprint's farthest probe from the origin, whichever way the object turns, and two of
+    # the water's cells more: the faces round a probe keep all their corners.
+    reach = math.hypot(*centre) + math.hypot(length / 2.0, beam / 2.0) + 2.0 * _cell(water)
+    patch = _patch(obj, water, anchor, collection, reach + PATCH_MARGIN)
     scale = [s if abs(s) > 1e-9 else 1.0 for s in obj.scale]
     probes = []
     for index, (x, y, _w) in enumerate(points):
         probe = _empty(f"{obj.name} Float Probe {index + 1}", "probe", collection)
         probe.parent = anchor
         probe.location = (x / scale[0], y / scale[1], 0.0)  # in the anchor's (the object's) own units
-        _drop_onto(probe, water)
+        _drop_onto(probe, patch)
         probes.append(probe)
     pose = _empty(f"{obj.name} Float Pose", "pose", collection)
     _drive(pose, "location", 2, _weighted_sum([w[0] for w in weights], -draft - keel), probes)
@@ -242,9 +317,8 @@ def remove(pose):
     if pose is None or pose.get(RIG_KEY) != "pose":
         return
     anchor = anchor_of(pose)
-    for obj in [*probes_of(pose), pose, anchor]:
-        if obj is not None and obj.name in bpy.data.objects:
-            bpy.data.objects.remove(obj)
+    probes = probes_of(pose)
+    _remove_objects([*patches_of(probes), *probes, pose, anchor])
     _remove_empty_collections()
 
 
@@ -311,8 +385,7 @@ def remove_lost_rigs():
                 remove(pose)
         else:
             probes = [o for o in bpy.data.objects if o.parent == anchor and o.get(RIG_KEY) == "probe"]
-            for obj in [*probes, anchor]:
-                bpy.data.objects.remove(obj)
+            _remove_objects([*patches_of(probes), *probes, anchor])
         changes.append(f"removed floating rig '{name}': its object is gone or floats no more")
     _remove_empty_collections()
     return changes

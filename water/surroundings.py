@@ -50,7 +50,7 @@ from ..nodes.ownership import is_local, is_original, mark, role_of
 from ..presets import schema
 from . import kind, open_sea
 from .editable import check_editable
-from .float_constraints import floating_on
+from .float_constraints import RIG_KEY, floating_on
 from .grid import max_resolution
 from .mirror import rest_bounds
 from .values import is_water
@@ -198,7 +198,8 @@ def default_surroundings(water, scene):
 
     Worked out in the water's object space, so a tilted or scaled water gets the same answer.
     Other waters are left out (two waters seeing each other would be a cycle), and so are the
-    objects floating on this water (they read its surface: a cycle too) and the
+    objects floating on this water (they read its surface: a cycle too), the floating rigs'
+    patches (cut from a water's surface) and the
     surroundings caches: a cache shares its water's mesh, so it may read as a water (`is_water`)
     when its material slots are not its own; it is left out by its mark in any case.
     """
@@ -210,6 +211,8 @@ def default_surroundings(water, scene):
     found = []
     for obj in scene.objects:
         if obj == water or obj.type != "MESH" or is_cache(obj) or floating_on(obj) == water:
+            continue
+        if obj.get(RIG_KEY):  # a floating rig's patch: it reads the water (a cycle)
             continue
         if is_water(obj) or surroundings_modifier(obj) is not None:
             continue
