@@ -5,7 +5,8 @@ Shrinkwrap constraint onto it (how objects floated by their origin before: Blend
 sea's ray-cast tree each frame), with a 25 x 6 x 4 m hull floating by its footprint (21 probes
 dropped onto its patch of the sea, `water/float_rig.py`), and with ten of them. Milliseconds a
 frame over 24 frames (`frame_set`), in 5 interleaved rounds; ratios to the sea alone, round by
-round, median and range. Run with `tools/bench float_cost`.
+round, median and range. Run with `tools/bench float_cost`; `tools/bench float_cost --water=lake`
+(a 300 m lake at 0.5 m with its waves) or `--water=ocean` (the seeds' ocean) for the others.
 """
 
 import statistics
@@ -37,14 +38,30 @@ def per_frame_ms(scene):
     return (time.perf_counter() - start) * 1000.0 / FRAMES
 
 
+WATERS = ("open_sea", "lake", "ocean")  # `--water=lake`: the lake with its waves; `ocean`: the seeds'
+
+
+def _water(api, scene, kind):
+    if kind == "open_sea":
+        return api.add_water(
+            scene, preset="open_sea", sea_swell_height=3.0, sea_swell_period=8.0, see_surroundings=False
+        ).object
+    # 300 m at 0.5 m: about as many points as the open sea's (361,201 against 148,225 inside).
+    water = api.add_water(scene, preset=kind, size=300.0, resolution=601, see_surroundings=False).object
+    if kind == "lake":
+        api.add_waves(water)
+    return water
+
+
 def main():
+    asked = [arg.split("=", 1)[1] for arg in sys.argv if arg.startswith("--water=")]
+    kind = asked[0] if asked else "open_sea"
+    assert kind in WATERS, f"--water= is one of {WATERS}"
     bpy = harness.start()
     harness.install(harness.build_zip(tempfile.mkdtemp(prefix="water_surface_dist_")))
     scene = harness.clean_scene(width=64, height=36, samples=1)
     api = harness.addon("api")
-    sea = api.add_water(
-        scene, preset="open_sea", sea_swell_height=3.0, sea_swell_period=8.0, see_surroundings=False
-    ).object
+    sea = _water(api, scene, kind)
     probe = bpy.data.objects.new("Origin Float", None)
     scene.collection.objects.link(probe)
     wrap = probe.constraints.new("SHRINKWRAP")
@@ -58,7 +75,7 @@ def main():
         rig = [o for o in bpy.data.objects if o.get("water_surface_float_rig") and o not in before]
         fleet.append([boat, *rig])
     cases = {
-        "the open sea alone": (),
+        "the water alone": (),
         "+ one Shrinkwrap onto it (floating by the origin)": (probe,),
         "+ a hull floating by its footprint (its rig: 23 empties and its patch)": tuple(fleet[0]),
         "+ ten hulls floating by their footprints": tuple(o for boat in fleet for o in boat),
@@ -70,8 +87,8 @@ def main():
             for obj in extras:
                 obj.hide_viewport = obj not in shown
             times[name].append(per_frame_ms(scene))
-    base = times["the open sea alone"]
-    print(f"\nBlender {bpy.app.version_string}; {FRAMES} frames, {ROUNDS} rounds")
+    base = times["the water alone"]
+    print(f"\nBlender {bpy.app.version_string}; {kind}; {FRAMES} frames, {ROUNDS} rounds")
     print("| case | ms/frame (median) | / the sea alone (median, range) |")
     print("| --- | --- | --- |")
     for name, found in times.items():

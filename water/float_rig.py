@@ -208,7 +208,36 @@ def _patch(obj, water, anchor, collection, reach):
     waves.set_wave_input(modifier, "Water", water)
     waves.set_wave_input(modifier, "Anchor", anchor)
     waves.set_wave_input(modifier, "Radius", reach)
+    grid = _even_grid(water)
+    if grid is not None:
+        side, corner, cell = grid
+        scale = max(abs(water.scale.x), abs(water.scale.y), 1e-6)
+        waves.set_wave_input(modifier, "Grid Side", side)
+        waves.set_wave_input(modifier, "Grid Corner", (*corner, 0.0))
+        waves.set_wave_input(modifier, "Grid Cell", cell)
+        waves.set_wave_input(modifier, "Patch Side", min(side, math.ceil(2.0 * reach / scale / cell) + 3))
     return patch
+
+
+def _even_grid(water):
+    """(points a side, first point (x, y), spacing) of `water`'s mesh if it is an even grid laid
+    out as `grid.grid_mesh` lays it (row by row, point i at column i % side, row i // side), in
+    its own space; else None (the open sea's graded grid, a user's mesh)."""
+    mesh = water.data
+    side = math.isqrt(len(mesh.vertices))
+    if side < 2 or side * side != len(mesh.vertices):
+        return None
+    points = np.empty(len(mesh.vertices) * 3)
+    mesh.vertices.foreach_get("co", points)
+    points = points.reshape(-1, 3)
+    corner, cell = points[0, :2], float(points[1, 0] - points[0, 0])
+    if cell <= 0.0:
+        return None
+    index = np.arange(len(points))
+    expected = corner + np.column_stack([index % side, index // side]) * cell
+    if np.abs(points[:, :2] - expected).max() > 1e-3 * cell:
+        return None
+    return side, (float(corner[0]), float(corner[1])), cell
 
 
 def _cell(water):
