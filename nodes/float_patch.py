@@ -6,8 +6,8 @@ the open sea (about 90 ms, BENCHMARKS), a few hundred here. The patch object has
 transform (Copy Transforms), so it works in the water's own space: the water's mesh as its
 modifiers leave it (Object Info, Original: no copy), less the points farther across than
 `Radius` metres from the anchor (which moves as the object does before it floats, so no cycle).
-Points, not faces: a face's centre and area would cost a pass over the faces (1.27x the sea
-alone for one hull, 3.5x for ten, against 1.04x and 1.27x). On an even grid (the lake's and the
+Points, not faces: a face's centre and area would cost a pass over the faces (docs/BENCHMARKS.md,
+Floating cost). On an even grid (the lake's and the
 seeds' ocean's) even the pass over the points is saved: the patch is a grid of its own whose
 points read the water's by index.
 """
