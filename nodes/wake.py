@@ -23,9 +23,10 @@ highest waves draw in towards the track (about `0.2 / Fr` rad, as Rabaud and Moi
 while the wedge stays 19.47° wide. On the arms the two waves meet and the stationary phase
 breaks down: `s` is taken as `sqrt(s² + ε²)`, `ε² = (4 U² / (g x))^(2/3)` (Airy's scale), and
 the waves die out over `ε²` beyond. Waves shorter than four mesh cells (`Detail`) are left out.
-The height scales as `Strength x Draft x Fr²` (`Fr = U / sqrt(g L)`, its square at most 0.25:
-faster hulls' waves break rather than grow), grows in from the hull back over half its
-length and fades as `exp(-age / Fade)`. `tests/test_wake.py` compares it over the whole patch
+The height is Kriebel and Seelig's (2005) highest wave one hull length across, which grows
+with speed, length and draft against the water's `Depth` (`_height_nodes`), over the
+pattern's own height there; it grows in from the hull back over half its length and fades
+as `exp(-age / Fade)`. `tests/test_wake.py` compares it over the whole patch
 behind the hull with the integral itself (`tools/kelvin_model.py`).
 
 Lengths come in metres (`Length`, `Beam`, `Draft`, `Detail`, `Drift`) and g in m/s²: the group
@@ -357,7 +358,7 @@ def _frame_nodes():
         "t_heading": _named("wake_heading", "FLOAT_VECTOR", 15),
         "at_position": _sample("FLOAT_VECTOR", 16, "P"),
         # Worked out on the track's few points, not on each water point: g / U² and the
-        # height scale (Strength x Draft x Fr², faded by the point's age).
+        # height scale (Kriebel and Seelig's, x Strength, faded by the point's age).
         "at_kscale": _sample("FLOAT", 16, "its g / U²"),
         "at_amp": _sample("FLOAT", 16, "its height scale"),
         "at_arc": _sample("FLOAT", 16, "its distance come"),
@@ -730,9 +731,6 @@ def _kelvin_nodes():
         "outside": math("EXPONENT", 29, "fades just beyond the arms"),
         "fr2": math("DIVIDE", 24, "Fr² = U² / (g L)"),
         "gl": math("MULTIPLY", 23, "g L", a=G),
-        "fr2_cap": math("MINIMUM", 25, "Fr² up to 0.25: waves break beyond", b=0.25),
-        "height": math("MULTIPLY", 26, "Draft x Fr²"),
-        "strength": math("MULTIPLY", 26, "x Strength"),
         "age_s": math("DIVIDE", 23, "age / Fade"),
         "age_neg": math("MULTIPLY", 24, "-", b=-1.0),
         "fade": math("EXPONENT", 25, "exp(-age / Fade)"),
@@ -816,11 +814,6 @@ def _kelvin_nodes():
         ("input:Length", "gl:#1"),
         ("u2:Value", "fr2:#0"),
         ("gl:Value", "fr2:#1"),
-        ("input:Draft", "height:#0"),
-        ("fr2:Value", "fr2_cap:#0"),
-        ("fr2_cap:Value", "height:#1"),
-        ("height:Value", "strength:#0"),
-        ("input:Strength", "strength:#1"),
         ("age:Value", "age_s:#0"),
         ("input:Fade", "age_s:#1"),
         ("age_s:Value", "age_neg:#0"),
@@ -882,6 +875,100 @@ def _kelvin_nodes():
         nodes |= more_nodes
         links += more_links
     return nodes, tuple(links)
+
+
+# Kriebel and Seelig (2005, "An empirical model for ship-generated waves"): the highest wave a
+# hull leaves at `y` across its track, `g H / U² = β (F* - 0.1)² (y / L)^(-1/3)`, with the
+# Froude number raised by the draft `T` against the depth `d`, `F* = F exp(α T / d)`,
+# `α = 2.35 (1 - Cb)`. Cb (the hull's block coefficient) is taken as a small craft's 0.6; β
+# (1 for a hull whose bow is half its length, about 1.6 a third, 4 a quarter) is `Strength`.
+# Their data reach F* 0.5: F* and F are each held there, so the height grows with speed and
+# draft up to it and no further (faster hulls plane; their waves break).
+KS_ALPHA = 2.35 * (1.0 - 0.6)
+KS_F_LOW, KS_F_HIGH = 0.1, 0.5
+# The group's own pattern's crest-to-trough height one hull length across, by Froude number:
+# ln N = c0 + c1 / Fr + c2 / Fr² + c3 / Fr⁴ + c4 ln Fr, Fr in 0.25..3 (tools/wake_heights.py
+# fits it, within 5%). The height scale is Kriebel and Seelig's height at y = L over N.
+PATTERN_HEIGHT = (-2.587192, 2.640087, -0.540814, -0.015939, -0.123133)
+PATTERN_FROUDE = (0.25, 3.0)
+DEPTH_DEFAULT = 10.0  # m: the Depth socket's default
+
+
+def _height_nodes():
+    """The height scale, worked out on the track's points: Kriebel and Seelig's highest wave a
+    hull length across (`H / L = β (F_c - 0.1)² min(F, 0.5)²`, `F_c = min(F e, 0.5)`,
+    `e = exp(α T / d)`), over the pattern's own height there (`N(Fr)`), x Strength."""
+    c0, c1, c2, c3, c4 = PATTERN_HEIGHT
+    nodes = {
+        "fr": math("SQRT", 25, "Fr"),
+        "td": math("DIVIDE", 24, "T / d"),
+        "td_a": math("MULTIPLY", 25, "α T / d", b=KS_ALPHA),
+        "ks_e": math("EXPONENT", 26, "e = exp(α T / d)"),
+        "fstar": math("MULTIPLY", 26, "F* = F e"),
+        "fc": math("MINIMUM", 27, "F*, held at 0.5", b=KS_F_HIGH),
+        "excess": math("SUBTRACT", 28, "F* - 0.1", b=KS_F_LOW),
+        "excess_in": math("MAXIMUM", 29, "(> 0)", b=0.0),
+        "excess2": math("MULTIPLY", 30, "(F* - 0.1)²"),
+        "fv": math("MINIMUM", 28, "F, held at 0.5", b=KS_F_HIGH),
+        "fv2": math("MULTIPLY", 29, "F² = U² / (g L)"),
+        "h_per_l": math("MULTIPLY", 31, "g H / U² x U² / (g L) = H / L"),
+        "h_ks": math("MULTIPLY", 32, "H at y = L (units up)"),
+        "fr_in": math("MAXIMUM", 26, "Fr, 0.25 ..", b=PATTERN_FROUDE[0]),
+        "fr_c": math("MINIMUM", 27, ".. 3", b=PATTERN_FROUDE[1]),
+        "inv": math("DIVIDE", 28, "1 / Fr", a=1.0),
+        "inv2": math("MULTIPLY", 29, "1 / Fr²"),
+        "inv4": math("MULTIPLY", 30, "1 / Fr⁴"),
+        "ln_fr": math("LOGARITHM", 28, "ln Fr", b=2.718281828459045),
+        "n1": math("MULTIPLY_ADD", 29, "c0 + c1 / Fr", b=c1, c=c0),
+        "n2": math("MULTIPLY_ADD", 30, "+ c2 / Fr²", b=c2),
+        "n3": math("MULTIPLY_ADD", 31, "+ c3 / Fr⁴", b=c3),
+        "n4": math("MULTIPLY_ADD", 32, "+ c4 ln Fr: ln N", b=c4),
+        "n": math("EXPONENT", 33, "N: the pattern's height at y = L"),
+        "height": math("DIVIDE", 34, "height scale: H / N"),
+        "strength": math("MULTIPLY", 35, "x Strength (β)"),
+    }
+    links = (
+        ("fr2:Value", "fr:#0"),
+        ("input:Draft", "td:#0"),
+        ("depth_u:Value", "td:#1"),
+        ("td:Value", "td_a:#0"),
+        ("td_a:Value", "ks_e:#0"),
+        ("fr:Value", "fstar:#0"),
+        ("ks_e:Value", "fstar:#1"),
+        ("fstar:Value", "fc:#0"),
+        ("fc:Value", "excess:#0"),
+        ("excess:Value", "excess_in:#0"),
+        ("excess_in:Value", "excess2:#0"),
+        ("excess_in:Value", "excess2:#1"),
+        ("fr:Value", "fv:#0"),
+        ("fv:Value", "fv2:#0"),
+        ("fv:Value", "fv2:#1"),
+        ("excess2:Value", "h_per_l:#0"),
+        ("fv2:Value", "h_per_l:#1"),
+        ("h_per_l:Value", "h_ks:#0"),
+        ("length_up:Value", "h_ks:#1"),
+        ("fr:Value", "fr_in:#0"),
+        ("fr_in:Value", "fr_c:#0"),
+        ("fr_c:Value", "inv:#1"),
+        ("inv:Value", "inv2:#0"),
+        ("inv:Value", "inv2:#1"),
+        ("inv2:Value", "inv4:#0"),
+        ("inv2:Value", "inv4:#1"),
+        ("fr_c:Value", "ln_fr:#0"),
+        ("inv:Value", "n1:#0"),
+        ("inv2:Value", "n2:#0"),
+        ("n1:Value", "n2:#2"),
+        ("inv4:Value", "n3:#0"),
+        ("n2:Value", "n3:#2"),
+        ("ln_fr:Value", "n4:#0"),
+        ("n3:Value", "n4:#2"),
+        ("n4:Value", "n:#0"),
+        ("h_ks:Value", "height:#0"),
+        ("n:Value", "height:#1"),
+        ("height:Value", "strength:#0"),
+        ("input:Strength", "strength:#1"),
+    )
+    return nodes, links
 
 
 def _clamped_sample(data_type, column, label):
@@ -1361,6 +1448,7 @@ IN_UNITS = {
     "input:Length": "length_u:Value",
     "input:Beam": "beam_u:Value",
     "input:Draft": "draft_u:Value",
+    "input:Depth": "depth_u:Value",
     "input:Detail": "detail_u:Value",
     "input:Drift": "drift_u:Vector",
 }
@@ -1382,6 +1470,8 @@ def _units_nodes():
         "beam_u": math("DIVIDE", 6, "Beam, in units"),
         "detail_u": math("DIVIDE", 6, "Detail, in units"),
         "draft_u": math("DIVIDE", 6, "Draft, in units up"),
+        "depth_u": math("DIVIDE", 6, "Depth, in units up"),
+        "length_up": math("DIVIDE", 6, "Length, in units up (a height's scale)"),
         "drift_u": vmath("SCALE", 6, "Drift, in units"),
         "g_u": math("DIVIDE", 6, "g, in units", a=G),
     }
@@ -1402,13 +1492,23 @@ def _units_nodes():
         ("across_e:Value", "g_u:#1"),
     ]
     links += [("across_e:Value", f"{key}:#1") for key in ("length_u", "beam_u", "detail_u")]
-    links.append(("up_e:Value", "draft_u:#1"))
+    links += [("input:Depth", "depth_u:#0"), ("input:Length", "length_up:#0")]
+    links += [("up_e:Value", f"{key}:#1") for key in ("draft_u", "depth_u", "length_up")]
     return nodes, links
 
 
 def _spec():
     nodes, links = {}, []
-    for part in (_track_nodes, _ring_nodes, _frame_nodes, _kelvin_nodes, _foam_nodes, _zone_nodes, _walks):
+    for part in (
+        _track_nodes,
+        _ring_nodes,
+        _frame_nodes,
+        _kelvin_nodes,
+        _height_nodes,
+        _foam_nodes,
+        _zone_nodes,
+        _walks,
+    ):
         more_nodes, more_links = part()
         assert not set(more_nodes) & set(nodes), set(more_nodes) & set(nodes)  # one key, one node
         nodes |= more_nodes
@@ -1421,7 +1521,7 @@ def _spec():
     links += more_links
     return GroupSpec(
         name=NAME,
-        version=4,
+        version=5,
         description="The Kelvin wake, rings and foam of one moving object (its track kept by a "
         "simulation zone)",
         tree_type="GeometryNodeTree",
@@ -1446,12 +1546,22 @@ def _spec():
             ),
             Socket("Draft", "NodeSocketFloat", 0.5, 0.0, 100.0, "DISTANCE", "How deep the hull sits"),
             Socket(
+                "Depth",
+                "NodeSocketFloat",
+                DEPTH_DEFAULT,
+                0.1,
+                10000.0,
+                "DISTANCE",
+                "The water's depth under the hull: a hull sitting deep in shallow water makes higher waves",
+            ),
+            Socket(
                 "Strength",
                 "NodeSocketFloat",
                 1.0,
                 0.0,
                 10.0,
-                tooltip="Wake height, x the Draft x the Froude number²",
+                tooltip="Wake height x Kriebel and Seelig's (their β): 1 for a bow half the hull long, "
+                "about 1.6 a third, 4 a quarter",
             ),
             Socket(
                 "Detail",

@@ -15,7 +15,7 @@ to 145, stepped in order as a render does), the evaluated mesh is read in the tr
   checked the same way.
 * The transverse waves along the track: wavelength 2πU²/g (7.85 m) within 15%, from the
   crossings of zero between 3 and 15 m behind.
-* Heights: twice the draft, twice the height; a slower hull, lower waves; lower further behind.
+* Heights: Kriebel and Seelig's (2005) over speed, draft and distance across (issue 37 point 2).
 * Foam round the hull and along the track behind it, drifted downwind, none ahead of it.
 * A turning hull: the foam lies along the bend it took, not along its heading now; the wake,
   worked out only in its zone round the track, is the same as worked out everywhere.
@@ -232,27 +232,62 @@ def test_the_lakes_shading_shows_the_wakes_foam(lake_wake, render):
     assert foam > water + 0.25
 
 
-def test_heights_grow_with_draft_and_speed_and_fall_behind(lake_wake):
-    x, y = _track_frame(lake_wake["points"], _end(), HEADING)
-    height = np.abs(lake_wake["points"][:, 2])
-    wedge = np.abs(y) < 0.4 * x
-    near = height[wedge & (x > 5.0) & (x < 8.0)].max()
-    far = height[wedge & (x > 15.0) & (x < 18.0)].max()
-    assert far < 0.8 * near
-    wake = harness.addon("water.wake")
-    (modifier,) = wake.wake_modifiers(lake_wake["water"])
-    waves = harness.addon("water.waves")
-    assert waves.get_wave_input(modifier, "Draft") == pytest.approx(DRAFT)
-    scene = lake_wake["scene"]
-    waves.set_wave_input(modifier, "Draft", 2 * DRAFT)
-    _step(scene)
-    points, _foam = _surface(lake_wake["water"])
-    deeper = np.abs(points[:, 2])[wedge & (x > 5.0) & (x < 8.0)].max()
-    assert deeper == pytest.approx(2 * near, rel=0.05)
-    waves.set_wave_input(modifier, "Draft", DRAFT)
+def _kriebel_seelig(length, speed, draft, depth, across, block=0.6, beta=1.0):
+    """Kriebel and Seelig (2005): the highest wave, crest to trough, `across` metres from the
+    track of a hull `length` long at `speed` drawing `draft` in `depth` of water:
+    `g H / U² = β (F* - 0.1)² (y / L)^(-1/3)`, `F* = F exp(α T / d)`, `α = 2.35 (1 - Cb)`,
+    held where their data end (F* and F at 0.5)."""
+    froude = speed / math.sqrt(G * length)
+    raised = min(froude * math.exp(2.35 * (1.0 - block) * draft / depth), 0.5)
+    return beta * (raised - 0.1) ** 2 * min(froude, 0.5) ** 2 * length * (across / length) ** (-1.0 / 3.0)
 
 
-def _straight_wake(length, speed, seconds, heading=2.3, end=(-8.0, 8.0), size=90.0, fade=None):
+def _highest_across(x, y, height, length, lines):
+    """Crest to trough along lines `lines` hull lengths across (both sides, each 0.1 L wide):
+    the largest swing behind the hull, as a gauge there records the passing wake, brought to
+    `y = L` by `(y / L)^(1/3)`; their mean."""
+    behind = x > 0.8 * length
+    out = []
+    for line in lines:
+        for side in (1.0, -1.0):
+            pick = behind & (np.abs(side * y / length - line) < 0.05)
+            out.append(np.ptp(height[pick]) * line ** (1.0 / 3.0))
+    return float(np.mean(out))
+
+
+def test_heights_follow_kriebel_and_seelig_over_speed_draft_and_distance(addon):
+    """Issue 37 point 2: a 4 m hull on 5 m of water at Froude 0.3 and 0.4, drawing 0.5 m and
+    1 m: the highest waves a hull length across are Kriebel and Seelig's (2005) within 20%,
+    and their ratios over speed and draft theirs within 15%; at Froude 0.4, run long enough
+    for the waves twice as far across to have passed (40 m behind), those too within 25% (they
+    fall as `y^(-1/3)`)."""
+    length, depth = 4.0, 5.0
+    lines = np.linspace(0.85, 1.2, 8)
+    ours, theirs = {}, {}
+    for froude, draft, seconds in ((0.3, 0.5, 10.0), (0.3, 1.0, 10.0), (0.4, 0.5, 17.0)):
+        speed = froude * math.sqrt(G * length)
+        run = np.array([math.cos(2.3), math.sin(2.3)]) * speed * seconds / 2.0
+        x, y, height, _fade = _straight_wake(
+            length, speed, seconds, end=run, size=52.0, fade=600.0, inputs={"Draft": draft, "Depth": depth}
+        )
+        ours[froude, draft] = _highest_across(x, y, height, length, lines)
+        theirs[froude, draft] = _kriebel_seelig(length, speed, draft, depth, length)
+        print(
+            f"Fr {froude} draft {draft}: at L {ours[froude, draft]:.4f} m,",
+            f"theirs {theirs[froude, draft]:.4f}",
+        )
+        assert ours[froude, draft] == pytest.approx(theirs[froude, draft], rel=0.2)
+    far = _highest_across(x, y, height, length, 2.0 * lines) * 2.0 ** (-1.0 / 3.0)
+    their_far = _kriebel_seelig(length, speed, draft, depth, 2.0 * length)
+    print(f"Fr 0.4 at 2 L: {far:.4f} m, theirs {their_far:.4f}")
+    assert far == pytest.approx(their_far, rel=0.25)
+    for a, b in (((0.3, 1.0), (0.3, 0.5)), ((0.4, 0.5), (0.3, 0.5))):
+        ratio, their_ratio = ours[a] / ours[b], theirs[a] / theirs[b]
+        print("ratio", a, "over", b, round(ratio, 3), "theirs", round(their_ratio, 3))
+        assert ratio == pytest.approx(their_ratio, rel=0.15)
+
+
+def _straight_wake(length, speed, seconds, heading=2.3, end=(-8.0, 8.0), size=90.0, fade=None, inputs=None):
     """A box hull `length` x 0.4 `length` x 0.25 `length` running straight at `speed` for
     `seconds` along `heading` (a diagonal, so the wake's frame is turned), ending at `end` on a
     lake meshed at 0.25 m: (x behind, y across, height) of the evaluated water."""
@@ -273,8 +308,8 @@ def _straight_wake(length, speed, seconds, heading=2.3, end=(-8.0, 8.0), size=90
     _linear(hull)
     _api().add_wake_source(hull, water)
     (modifier,) = harness.addon("water.wake").wake_modifiers(water)
-    if fade is not None:
-        harness.addon("water.waves").set_wave_input(modifier, "Fade", fade)
+    for name, value in (({"Fade": fade} if fade is not None else {}) | (inputs or {})).items():
+        harness.addon("water.waves").set_wave_input(modifier, name, value)
     _step(scene, last)
     points, _foam = _surface(water)
     x, y = _track_frame(points, end, heading)
@@ -512,7 +547,7 @@ def test_the_wake_worked_out_only_round_its_track_equals_it_worked_out_everywher
         np.abs(foam_everywhere - foam).max(),
     )
     assert height.max() > 0.05
-    assert np.abs(everywhere - points).max() < 0.002
+    assert np.abs(everywhere - points).max() < 0.01 * height.max()  # the zone's edge: waves 1% high
     assert np.abs(foam_everywhere - foam).max() < 0.01
     nearest, foam_nearest, nearest_feet = found["nearest"]
     moved = (height > 0.002) | (np.abs(nearest[:, 2]) > 0.002)

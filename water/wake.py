@@ -125,6 +125,12 @@ def _drift(water):
     return (*(direction * speed), 0.0)
 
 
+def _depth(water):
+    """Metres of water under the hull: the open sea's Ocean depth, else the group's default."""
+    ocean = next((m for m in water.modifiers if m.type == "OCEAN"), None)
+    return ocean.depth if ocean is not None else wake_spec.DEPTH_DEFAULT
+
+
 def _place(water, modifier):
     """Before the surroundings' sample (which measures the surface), after everything else."""
     modifiers = list(water.modifiers)
@@ -172,6 +178,7 @@ def add_wake_source(obj, water, strength=1.0):
         ("Length", length),
         ("Beam", beam),
         ("Draft", draft),
+        ("Depth", _depth(water)),
         ("Strength", strength),
         ("Detail", min(_cell(water), DETAIL_MAX)),
         ("Drift", _drift(water)),
