@@ -1,6 +1,6 @@
 """Renders boats and their wakes (docs/boat_wakes.png): a boat crossing the lake at 4 m/s and one
-on the open sea (6 m/s wind) at 15 m/s, each from a chase camera behind and above it, side by
-side. The boat (`render_sea.boat`: a 6 m hull and a cabin) floats with `api.float_on_water`,
+on the open sea (6 m/s wind) at 5 m/s, each from a chase camera 10 m from it, behind, aside and
+above, side by side. The boat (`render_sea.boat`: a 6 m hull and a cabin) floats with `api.float_on_water`,
 which gives it its wake; the frames before are stepped in order, as a render of the animation
 does. Run with `tools/demo boat`.
 """
@@ -38,10 +38,13 @@ def chase(bpy, scene, water, speed, name):
             key.interpolation = "LINEAR"
     api = harness.addon("api")
     print(api.float_on_water(hull, water, draft=0.5), flush=True)
-    eye = -direction * 22.0 + np.array([direction[1], -direction[0]]) * 7.0
-    harness.add_camera(scene, (*eye, 8.0), (*(-direction * 6.0), 0.0), lens=30.0)
+    eye = direction * 2.0 + np.array([direction[1], -direction[0]]) * 7.0  # 10 m from the boat
+    harness.add_camera(scene, (*eye, 7.0), (*(-direction * 12.0), 0.0), lens=20.0)
     for frame in range(1, FRAME + 1):
         scene.frame_set(frame)
+    evaluated = water.evaluated_get(bpy.context.evaluated_depsgraph_get()).data
+    heights = np.array([v.co.z for v in evaluated.vertices])
+    print(f"[{name}] the water's heights: {heights.min():.3f} to {heights.max():.3f} m", flush=True)
     print(
         f"[{name}] boat at {speed} m/s, {SIZE[0]} x {SIZE[1]}, Blender {bpy.app.version_string} ...",
         flush=True,
@@ -66,13 +69,13 @@ def main():
     start = time.monotonic()
     api = harness.addon("api")
     scene = scene_with_sky(bpy)
-    lake = api.add_water(scene, preset="lake", size=160.0, resolution=641, name="Lake").object
+    lake = api.add_water(scene, preset="calm_mirror", size=160.0, resolution=641, name="Lake").object
     left = chase(bpy, scene, lake, 4.0, "boat_lake")
     scene = scene_with_sky(bpy)
     sea = api.add_water(
-        scene, preset="open_sea", sea_wind_speed=6.0, wind_direction=(0.8, 0.6), name="Sea"
+        scene, preset="open_sea", sea_wind_speed=4.0, wind_direction=(0.8, 0.6), name="Sea"
     ).object
-    right = chase(bpy, scene, sea, 15.0, "boat_sea")
+    right = chase(bpy, scene, sea, 5.0, "boat_sea")
     write_png(OUT / "boat_wakes.png", np.concatenate([left, right], axis=1))
     shutil.copyfile(OUT / "boat_wakes.png", harness.ROOT / "docs" / "boat_wakes.png")
     print(f"wrote {OUT / 'boat_wakes.png'} in {time.monotonic() - start:.0f} s", flush=True)
