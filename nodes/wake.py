@@ -44,6 +44,7 @@ where it moves through the water, and along the track behind it, drifting with `
 
 from .physics import KELVIN_TAN, KELVIN_ZONE_TAN, SURFACE_TENSION, G
 from .spec import GroupSpec, Node, Socket, math, vmath
+from .water_waves import NORMAL_ATTRIBUTE
 
 NAME = "Water Wake"
 FOAM_ATTRIBUTE = "water_wake_foam"
@@ -892,6 +893,7 @@ KS_F_LOW, KS_F_HIGH = 0.1, 0.5
 PATTERN_HEIGHT = (-2.587192, 2.640087, -0.540814, -0.015939, -0.123133)
 PATTERN_FROUDE = (0.25, 3.0)
 DEPTH_DEFAULT = 10.0  # m: the Depth socket's default
+SHADING_NORMAL = NORMAL_ATTRIBUTE  # the normal the seeds' ocean shades with
 
 
 def _height_nodes():
@@ -967,6 +969,28 @@ def _height_nodes():
         ("n:Value", "height:#1"),
         ("height:Value", "strength:#0"),
         ("input:Strength", "strength:#1"),
+    )
+    return nodes, links
+
+
+def _normal_nodes():
+    """Where the shading reads a stored normal (`Water Waves`' analytic `water_normal`, the
+    seeds' ocean) rather than the mesh's, that normal is the mesh's where the wake moved it,
+    so the wake's waves show in the light too; with `Shading Normal` off it is never worked out."""
+    nodes = {
+        "mesh_normal": Node("GeometryNodeInputNormal", 50, label="the mesh's normal, the wake's in it"),
+        "store_normal": _store(SHADING_NORMAL, "FLOAT_VECTOR", 50),
+        "normal_switch": Node(
+            "GeometryNodeSwitch", 51, {"input_type": "GEOMETRY"}, label="the shading's normal too?"
+        ),
+    }
+    links = (
+        ("set:Geometry", "store_normal:Geometry"),
+        ("in_wake:Value", "store_normal:Selection"),
+        ("mesh_normal:Normal", "store_normal:Value"),
+        ("input:Shading Normal", "normal_switch:Switch"),
+        ("set:Geometry", "normal_switch:False"),
+        ("store_normal:Geometry", "normal_switch:True"),
     )
     return nodes, links
 
@@ -1166,7 +1190,7 @@ def _foam_nodes():
         ("trail_foam:Value", "foam_here:#1"),
         ("foam_before:Attribute", "foam:#0"),
         ("foam_here:Value", "foam:#1"),
-        ("set:Geometry", "store_foam:Geometry"),
+        ("normal_switch:Output", "store_foam:Geometry"),
         ("in_foam:Value", "store_foam:Selection"),
         ("foam:Value", "store_foam:Value"),
         ("store_foam:Geometry", "drop_zone:Geometry"),
@@ -1505,6 +1529,7 @@ def _spec():
         _frame_nodes,
         _kelvin_nodes,
         _height_nodes,
+        _normal_nodes,
         _foam_nodes,
         _zone_nodes,
         _walks,
@@ -1521,7 +1546,7 @@ def _spec():
     links += more_links
     return GroupSpec(
         name=NAME,
-        version=5,
+        version=6,
         description="The Kelvin wake, rings and foam of one moving object (its track kept by a "
         "simulation zone)",
         tree_type="GeometryNodeTree",
@@ -1599,6 +1624,13 @@ def _spec():
                 600.0,
                 None,
                 "Seconds over which the foam fades to a third",
+            ),
+            Socket(
+                "Shading Normal",
+                "NodeSocketBool",
+                False,
+                tooltip=f"Also tilt the '{SHADING_NORMAL}' the shading reads (the seeds' ocean: its waves' "
+                "own normal) by the wake, so the wake's waves show in its light",
             ),
         ),
         outputs=(Socket("Geometry", "NodeSocketGeometry"),),

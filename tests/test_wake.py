@@ -620,6 +620,74 @@ def _surface_and_feet(water):
         evaluated.to_mesh_clear()
 
 
+def _normals_and_heights(water, cell):
+    """The evaluated water on its grid (rows along y): heights (n, n), the stored `water_normal`
+    (n, n, 3) and numpy's normal of the heights' slopes (central differences, `cell` apart)."""
+    evaluated = water.evaluated_get(bpy.context.evaluated_depsgraph_get())
+    mesh = evaluated.to_mesh()
+    try:
+        points = np.empty(len(mesh.vertices) * 3)
+        mesh.vertices.foreach_get("co", points)
+        stored = np.empty(len(mesh.vertices) * 3)
+        mesh.attributes["water_normal"].data.foreach_get("vector", stored)
+    finally:
+        evaluated.to_mesh_clear()
+    points, stored = points.reshape(-1, 3), stored.reshape(-1, 3)
+    order = np.lexsort((np.round(points[:, 0] / cell), np.round(points[:, 1] / cell)))
+    side = int(round(math.sqrt(len(points))))
+    heights = points[order, 2].reshape(side, side)
+    d_dy, d_dx = np.gradient(heights, cell)
+    slope = np.stack([-d_dx, -d_dy, np.ones_like(d_dx)], axis=-1)
+    return heights, stored[order].reshape(side, side, 3), slope / np.linalg.norm(slope, axis=-1)[..., None]
+
+
+def _degrees(a, b):
+    return np.degrees(np.arccos(np.clip(np.sum(a * b, axis=-1), -1.0, 1.0)))
+
+
+def test_on_the_seeds_ocean_the_wake_tilts_the_normal_it_shades_with(addon):
+    """The seeds' ocean shades with the normal its waves store (`water_normal`, their analytic
+    one), not the mesh's: a 4 m hull at 3 m/s for 6 s on it; where the wake moved the water
+    (over 2 mm), that normal is the moved surface's (numpy's, from its slopes, within 1.5° for
+    95% of the points), tilted from the waves' own by the wake; elsewhere the waves' own."""
+    scene = harness.clean_scene(width=32, height=32, samples=1)
+    scene.render.fps = FPS
+    cell = 0.25
+    water = _api().add_water(scene, preset="ocean", size=40.0, resolution=161, name="Ocean").object
+    hull = _hull(scene, size=(4.0, 1.6, 1.0))
+    _run_straight(hull, speed=3.0, heading=0.6, start=np.array([-12.0, -8.0]))
+    _api().add_wake_source(hull, water)
+    (modifier,) = harness.addon("water.wake").wake_modifiers(water)
+    _step(scene)
+    heights, stored, slopes = _normals_and_heights(water, cell)
+    modifier.show_viewport = False
+    still, waves_own, still_slopes = _normals_and_heights(water, cell)
+    modifier.show_viewport = True
+    inside = np.zeros(heights.shape, bool)
+    inside[2:-2, 2:-2] = True
+    moved = inside & (np.abs(heights - still) > 0.002)
+    off = _degrees(stored, slopes)[moved]
+    tilt = _degrees(stored, waves_own)[moved]
+    print(
+        "wake:",
+        moved.sum(),
+        "points moved; stored normal off the surface's (95th percentile)",
+        round(float(np.percentile(off, 95)), 3),
+        "degrees, tilted from the waves' own (median)",
+        round(float(np.median(tilt)), 3),
+        "; without the wake off (95th)",
+        round(float(np.percentile(_degrees(waves_own, still_slopes)[inside], 95)), 3),
+    )
+    assert moved.sum() > 1500
+    assert np.percentile(off, 95) < 1.5 and np.median(tilt) > 1.0
+    near = np.abs(heights - still) > 0.0  # a point's normal is its neighbours' too
+    near = near | np.roll(near, 1, 0) | np.roll(near, -1, 0)
+    near = near | np.roll(near, 1, 1) | np.roll(near, -1, 1)
+    untouched = inside & ~near
+    assert untouched.sum() > 10000
+    assert _degrees(stored, waves_own)[untouched].max() < 0.05
+
+
 @pytest.mark.render
 def test_the_wake_on_the_open_sea_is_the_models_and_its_shading_shows_the_foam(addon, eevee, render):
     scene = harness.clean_scene(width=64, height=64, samples=1)

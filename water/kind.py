@@ -19,7 +19,8 @@ OPEN_SEA = "open_sea"
 # What each kind of water allows. The mirror set-up's probe and light linking, the sun and
 # bump choices, lake presets and Cycles' physical caustics are the lake shading's; every kind
 # has ray tracing, surroundings, the shader's caustics (a part switched in and out of the
-# shader: the lake's depth colour and foam too), floating objects and repair.
+# shader: the lake's depth colour and foam too), floating objects and repair. The seeds' ocean
+# shades with the normal its waves store (`stored_normal`): a wake on it tilts that one too.
 FEATURES = {
     LAKE: frozenset(
         {"mirror", "ray_tracing", "waves", "surroundings", "caustics", "physical_caustics"}
@@ -27,6 +28,7 @@ FEATURES = {
     ),
     OCEAN: frozenset(
         {"ray_tracing", "waves", "surroundings", "caustics", "floating", "repair", "shader_parts"}
+        | {"stored_normal"}
     ),
     OPEN_SEA: frozenset(
         {"ray_tracing", "surroundings", "caustics", "floating", "repair", "whitecaps", "swell"}

@@ -29,6 +29,7 @@ from . import footprint_math, keep_out
 from .editable import check_editable
 from .float_constraints import floating_ancestor, pose_of
 from .float_rig import OWNER_KEY, anchor_of, footprint_of, footprint_settings
+from .kind import allows
 from .values import is_water, read_values, water_material
 from .waves import SURROUNDINGS_ROLE, get_wave_input, set_wave_input
 
@@ -182,6 +183,7 @@ def add_wake_source(obj, water, strength=1.0):
         ("Strength", strength),
         ("Detail", min(_cell(water), DETAIL_MAX)),
         ("Drift", _drift(water)),
+        ("Shading Normal", allows(water, "stored_normal")),
     ):
         set_wave_input(modifier, name, value)
     show_foam(material)
