@@ -54,8 +54,8 @@ def ensure_group(spec, specs, name=None, image=None, foam=None):
     created = tree is None
     if created:
         tree = bpy.data.node_groups.new(name or spec.name, spec.tree_type)
-    if spec.tree_type == "GeometryNodeTree":
-        tree.is_modifier = True  # offered in the Add Modifier menu
+    if spec.tree_type == "GeometryNodeTree":  # a modifier, offered in the Add Modifier menu
+        tree.is_modifier = any(socket.kind == "NodeSocketGeometry" for socket in spec.inputs)
     try:
         _sync_interface(tree, spec)
         _rebuild_nodes(tree, spec, images, nested)

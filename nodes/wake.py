@@ -696,40 +696,11 @@ def _root(tag, tau, sign, column):
 
 
 def _kelvin_nodes():
-    """The height: the two stationary waves, the wedge, the size and the fading."""
+    """The height: Kelvin's pattern (`KELVIN_SPEC`) x its size, faded, grown in from the hull."""
     nodes = {
-        "x_pos": math("MAXIMUM", 22, "x (> 0)", b=1e-3),
-        "tan_a": math("DIVIDE", 23, "tan α = y / x"),
-        "t": math("MAXIMUM", 24, "tan α (> 0)", b=1e-4),
-        "t2": math("MULTIPLY", 25, "tan² α"),
-        "disc": math("MULTIPLY_ADD", 26, "1 - 8 tan² α: > 0 inside the wedge", b=-8.0, c=1.0),
-        "disc_in": math("MAXIMUM", 27, "0 outside", b=0.0),
-        "s": math("SQRT", 28, "s"),
-        "one_s": math("ADD", 29, "1 + s", b=1.0),
-        "two_t": math("MULTIPLY", 29, "2 tan α", b=2.0),
-        "tau_t": math("DIVIDE", 30, "transverse: tan θ = 2 tan α / (1 + s)"),
-        "four_t": math("MULTIPLY", 29, "4 tan α", b=4.0),
-        "tau_d": math("DIVIDE", 30, "diverging: tan θ = (1 + s) / (4 tan α)"),
         "u": math("MAXIMUM", 22, "U (> 0.2 m/s)", b=0.2),
         "u2": math("MULTIPLY", 23, "U²"),
         "k_scale": math("DIVIDE", 24, "g / U²", a=G),
-        "four_cells": math("MULTIPLY", 22, "4 cells", b=4.0),
-        "sum": math("ADD", 40, "both waves"),
-        "l_2pi": math("DIVIDE", 22, "L / 2π", b=2.0 * 3.141592653589793),
-        # The stationary phase breaks down on the arms, where the two waves meet (s = 0): there
-        # the sum is Airy's, its size falling as (g x / U²)^(-1/3). s is taken as
-        # sqrt(s² + ε²), ε² = (4 U² / (g x))^(2/3), and the waves die out beyond the arms over ε².
-        "x_amp": math("MAXIMUM", 23, "x, past the hull's first quarter"),
-        "l_quarter": math("MULTIPLY", 22, "L / 4", b=0.25),
-        "kx": math("MULTIPLY", 24, "g x / U²"),
-        "a_kx": math("DIVIDE", 25, "4 U² / (g x)", a=4.0),
-        "eps2": math("POWER", 26, "ε²", b=2.0 / 3.0),
-        "s2_eff": math("ADD", 28, "s² + ε²"),
-        "s_eff": math("SQRT", 29, "s, finite on the arms"),
-        "sp_base": math("MULTIPLY", 30, "g x / U² x s"),
-        "beyond": math("MINIMUM", 27, "how far outside (< 0)", b=0.0),
-        "beyond_s": math("DIVIDE", 28, "/ ε²"),
-        "outside": math("EXPONENT", 29, "fades just beyond the arms"),
         "fr2": math("DIVIDE", 24, "Fr² = U² / (g L)"),
         "gl": math("MULTIPLY", 23, "g L", a=G),
         "age_s": math("DIVIDE", 23, "age / Fade"),
@@ -744,7 +715,7 @@ def _kelvin_nodes():
         ),
         "in_track": math("LESS_THAN", 22, "not behind where it began"),
         "in_track_x": math("ADD", 21, "track's length + 1 cell"),
-        "e1": math("MULTIPLY", 41, ""),
+        "kelvin": Node("GeometryNodeGroup", 30, label="Kelvin's pattern", group=KELVIN_NAME),
         "e3": math("MULTIPLY", 43, ""),
         "amp": math("MULTIPLY", 27, "faded height scale"),
         "e6": math("MULTIPLY", 46, ""),
@@ -772,46 +743,10 @@ def _kelvin_nodes():
         "set": Node("GeometryNodeSetPosition", 49, label="the wake"),
     }
     links = [
-        ("x:Value", "x_pos:#0"),
-        ("y:Value", "tan_a:#0"),
-        ("x_pos:Value", "tan_a:#1"),
-        ("tan_a:Value", "t:#0"),
-        ("t:Value", "t2:#0"),
-        ("t:Value", "t2:#1"),
-        ("t2:Value", "disc:#0"),
-        ("disc:Value", "disc_in:#0"),
-        ("disc_in:Value", "s:#0"),
-        ("s:Value", "one_s:#0"),
-        ("t:Value", "two_t:#0"),
-        ("two_t:Value", "tau_t:#0"),
-        ("one_s:Value", "tau_t:#1"),
-        ("t:Value", "four_t:#0"),
-        ("one_s:Value", "tau_d:#0"),
-        ("four_t:Value", "tau_d:#1"),
         ("t_speed:Attribute", "u:#0"),
         ("u:Value", "u2:#0"),
         ("u:Value", "u2:#1"),
         ("u2:Value", "k_scale:#1"),
-        ("input:Detail", "four_cells:#0"),
-        ("t_term:Value", "sum:#0"),
-        ("d_term:Value", "sum:#1"),
-        ("input:Length", "l_2pi:#0"),
-        ("input:Length", "l_quarter:#0"),
-        ("x_pos:Value", "x_amp:#0"),
-        ("l_quarter:Value", "x_amp:#1"),
-        ("at_kscale:Value", "kx:#0"),
-        ("x_amp:Value", "kx:#1"),
-        ("kx:Value", "a_kx:#1"),
-        ("a_kx:Value", "eps2:#0"),
-        ("disc_in:Value", "s2_eff:#0"),
-        ("eps2:Value", "s2_eff:#1"),
-        ("s2_eff:Value", "s_eff:#0"),
-        ("kx:Value", "sp_base:#0"),
-        ("s_eff:Value", "sp_base:#1"),
-        ("disc:Value", "beyond:#0"),
-        ("beyond:Value", "beyond_s:#0"),
-        ("eps2:Value", "beyond_s:#1"),
-        ("beyond_s:Value", "outside:#0"),
         ("input:Length", "gl:#1"),
         ("u2:Value", "fr2:#0"),
         ("gl:Value", "fr2:#1"),
@@ -826,9 +761,12 @@ def _kelvin_nodes():
         ("input:Detail", "in_track_x:#1"),
         ("x:Value", "in_track:#0"),
         ("in_track_x:Value", "in_track:#1"),
-        ("sum:Value", "e1:#0"),
-        ("outside:Value", "e1:#1"),
-        ("e1:Value", "e3:#0"),
+        ("x:Value", "kelvin:X"),
+        ("y:Value", "kelvin:Y"),
+        ("at_kscale:Value", "kelvin:K"),
+        ("input:Length", "kelvin:Length"),
+        ("input:Detail", "kelvin:Detail"),
+        ("kelvin:Pattern", "e3:#0"),
         ("at_amp:Value", "e3:#1"),
         ("strength:Value", "amp:#0"),
         ("fade:Value", "amp:#1"),
@@ -871,11 +809,112 @@ def _kelvin_nodes():
         ("below_high:Result", "near_track:#1"),
         ("in_wake:Value", "set:Selection"),
     ]
+    return nodes, tuple(links)
+
+
+def _pattern_nodes():
+    """Kelvin's pattern inside its group: the two stationary waves inside the wedge (the roots
+    of `2 t τ² - τ + t = 0`), Airy's width on the arms and the fall beyond them."""
+    nodes = {
+        "x_pos": math("MAXIMUM", 22, "x (> 0)", b=1e-3),
+        "tan_a": math("DIVIDE", 23, "tan α = y / x"),
+        "t": math("MAXIMUM", 24, "tan α (> 0)", b=1e-4),
+        "t2": math("MULTIPLY", 25, "tan² α"),
+        "disc": math("MULTIPLY_ADD", 26, "1 - 8 tan² α: > 0 inside the wedge", b=-8.0, c=1.0),
+        "disc_in": math("MAXIMUM", 27, "0 outside", b=0.0),
+        "s": math("SQRT", 28, "s"),
+        "one_s": math("ADD", 29, "1 + s", b=1.0),
+        "two_t": math("MULTIPLY", 29, "2 tan α", b=2.0),
+        "tau_t": math("DIVIDE", 30, "transverse: tan θ = 2 tan α / (1 + s)"),
+        "four_t": math("MULTIPLY", 29, "4 tan α", b=4.0),
+        "tau_d": math("DIVIDE", 30, "diverging: tan θ = (1 + s) / (4 tan α)"),
+        "four_cells": math("MULTIPLY", 22, "4 cells", b=4.0),
+        "sum": math("ADD", 40, "both waves"),
+        "l_2pi": math("DIVIDE", 22, "L / 2π", b=2.0 * 3.141592653589793),
+        "x_amp": math("MAXIMUM", 23, "x, past the hull's first quarter"),
+        "l_quarter": math("MULTIPLY", 22, "L / 4", b=0.25),
+        "kx": math("MULTIPLY", 24, "g x / U²"),
+        "a_kx": math("DIVIDE", 25, "4 U² / (g x)", a=4.0),
+        "eps2": math("POWER", 26, "ε²", b=2.0 / 3.0),
+        "s2_eff": math("ADD", 28, "s² + ε²"),
+        "s_eff": math("SQRT", 29, "s, finite on the arms"),
+        "sp_base": math("MULTIPLY", 30, "g x / U² x s"),
+        "beyond": math("MINIMUM", 27, "how far outside (< 0)", b=0.0),
+        "beyond_s": math("DIVIDE", 28, "/ ε²"),
+        "outside": math("EXPONENT", 29, "fades just beyond the arms"),
+        # The stationary phase breaks down on the arms, where the two waves meet (s = 0): there
+        # the sum is Airy's, its size falling as (g x / U²)^(-1/3). s is taken as
+        # sqrt(s² + ε²), ε² = (4 U² / (g x))^(2/3), and the waves die out beyond the arms over ε².
+        "e1": math("MULTIPLY", 41, "the pattern"),
+    }
+    links = [
+        ("input:X", "x_pos:#0"),
+        ("input:Y", "tan_a:#0"),
+        ("x_pos:Value", "tan_a:#1"),
+        ("tan_a:Value", "t:#0"),
+        ("t:Value", "t2:#0"),
+        ("t:Value", "t2:#1"),
+        ("t2:Value", "disc:#0"),
+        ("disc:Value", "disc_in:#0"),
+        ("disc_in:Value", "s:#0"),
+        ("s:Value", "one_s:#0"),
+        ("t:Value", "two_t:#0"),
+        ("two_t:Value", "tau_t:#0"),
+        ("one_s:Value", "tau_t:#1"),
+        ("t:Value", "four_t:#0"),
+        ("one_s:Value", "tau_d:#0"),
+        ("four_t:Value", "tau_d:#1"),
+        ("input:Detail", "four_cells:#0"),
+        ("t_term:Value", "sum:#0"),
+        ("d_term:Value", "sum:#1"),
+        ("input:Length", "l_2pi:#0"),
+        ("input:Length", "l_quarter:#0"),
+        ("x_pos:Value", "x_amp:#0"),
+        ("l_quarter:Value", "x_amp:#1"),
+        ("input:K", "kx:#0"),
+        ("x_amp:Value", "kx:#1"),
+        ("kx:Value", "a_kx:#1"),
+        ("a_kx:Value", "eps2:#0"),
+        ("disc_in:Value", "s2_eff:#0"),
+        ("eps2:Value", "s2_eff:#1"),
+        ("s2_eff:Value", "s_eff:#0"),
+        ("kx:Value", "sp_base:#0"),
+        ("s_eff:Value", "sp_base:#1"),
+        ("disc:Value", "beyond:#0"),
+        ("beyond:Value", "beyond_s:#0"),
+        ("eps2:Value", "beyond_s:#1"),
+        ("beyond_s:Value", "outside:#0"),
+        ("sum:Value", "e1:#0"),
+        ("outside:Value", "e1:#1"),
+        ("e1:Value", "output:Pattern"),
+    ]
     for tag, tau, sign in (("t", "tau_t:Value", 1.0), ("d", "tau_d:Value", -1.0)):
         more_nodes, more_links = _root(tag, tau, sign, 31)
         nodes |= more_nodes
-        links += more_links
+        links += [tuple(RENAMED.get(end, end) for end in link) for link in more_links]
     return nodes, tuple(links)
+
+
+# Inside the pattern's group, what the wake's group feeds it.
+RENAMED = {"x:Value": "input:X", "y:Value": "input:Y", "at_kscale:Value": "input:K"}
+KELVIN_NAME = "Water Wake Kelvin"
+KELVIN_SPEC = GroupSpec(
+    name=KELVIN_NAME,
+    version=1,
+    description="Kelvin's pattern behind a moving pressure patch: the two stationary waves, the "
+    "wedge and Airy's arms (a field, in the hull's frame)",
+    tree_type="GeometryNodeTree",
+    inputs=(
+        Socket("X", "NodeSocketFloat", 1.0, tooltip="Distance behind the hull, along its track"),
+        Socket("Y", "NodeSocketFloat", 0.0, tooltip="Distance across the track, either side (≥ 0)"),
+        Socket("K", "NodeSocketFloat", 1.0, tooltip="g / U²: the transverse waves' wavenumber"),
+        Socket("Length", "NodeSocketFloat", 1.0, tooltip="The hull's length: it makes waves this long best"),
+        Socket("Detail", "NodeSocketFloat", 0.0, tooltip="A mesh cell: waves shorter than four are left out"),
+    ),
+    outputs=(Socket("Pattern", "NodeSocketFloat", tooltip="The height, before its size and fading"),),
+    nodes=_pattern_nodes()[0],
+    links=_pattern_nodes()[1],
+)
 
 
 # Kriebel and Seelig (2005, "An empirical model for ship-generated waves"): the highest wave a
@@ -1546,7 +1585,8 @@ def _spec():
     links += more_links
     return GroupSpec(
         name=NAME,
-        version=6,
+        version=7,
+        includes=(KELVIN_SPEC,),
         description="The Kelvin wake, rings and foam of one moving object (its track kept by a "
         "simulation zone)",
         tree_type="GeometryNodeTree",

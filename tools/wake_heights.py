@@ -22,9 +22,10 @@ G = 9.81
 FROUDE = np.concatenate([np.arange(0.25, 1.0, 0.0125), np.arange(1.0, 3.001, 0.05)])
 
 
-def pattern(x, y, froude, length=1.0):
-    """The group's pattern `f` (`nodes/wake.py` `_kelvin_nodes` and `_root`, the mesh's cut left
-    out), `x` behind and `y` across in metres."""
+def pattern(x, y, froude, length=1.0, cell=0.0):
+    """The group's pattern `f` (`nodes/wake.py` `KELVIN_SPEC`), `x` behind and `y` across in
+    metres; with a mesh `cell`, waves shorter than four cells fade out (to none at two cells, as
+    the group's "the mesh can hold it")."""
     speed = froude * np.sqrt(G * length)
     x = np.maximum(x, 1e-3)
     y = np.abs(y)
@@ -42,6 +43,9 @@ def pattern(x, y, froude, length=1.0):
         phase = k_scale * (x - y * tau) * q + sign * np.pi / 4.0
         kl = q2 * k_scale * length / (2.0 * np.pi)
         share = kl * kl * np.exp(1.0 - kl * kl)
+        if cell > 0.0:
+            wavelength = 2.0 * np.pi / (q2 * k_scale)
+            share = share * np.clip((wavelength / (4.0 * cell) - 0.5) / 0.5, 0.0, 1.0)
         total = total + share * np.sqrt(2.0 * np.pi / (q2 * q * curvature)) * np.cos(phase)
     return total * np.exp(np.minimum(disc, 0.0) / eps2)
 

@@ -1,0 +1,105 @@
+"""Issue 37 point 2: the wake's nested groups, each evaluated alone against numpy.
+
+* `Water Wake Kelvin` (Kelvin's pattern, a field in the hull's frame): over the whole patch 0.5
+  to 60 m behind a 6 m hull and 25 m either side, at Froude numbers 0.35, 0.52 and 1.2, the
+  group's values are `tools/wake_heights.py`'s `pattern` (the stationary-phase sum the group is
+  written after, its two roots, Airy's width on the arms and the fall beyond them) to float
+  precision; with a mesh cell given, the same with the waves too short for the mesh faded out.
+"""
+
+import math
+
+import bpy
+import numpy as np
+import pytest
+import wake_heights
+
+import harness
+
+G = 9.81
+
+
+def _evaluate(group, points, constants):
+    """The group's one float output at `points` (N, 2) as X and Y, its other inputs `constants`,
+    through a modifier on a mesh of those points (no faces)."""
+    tree = bpy.data.node_groups.new("test: evaluate a field group", "GeometryNodeTree")
+    tree.interface.new_socket("Geometry", in_out="INPUT", socket_type="NodeSocketGeometry")
+    tree.interface.new_socket("Geometry", in_out="OUTPUT", socket_type="NodeSocketGeometry")
+    nodes = tree.nodes
+    into, out = nodes.new("NodeGroupInput"), nodes.new("NodeGroupOutput")
+    position = nodes.new("GeometryNodeInputPosition")
+    split = nodes.new("ShaderNodeSeparateXYZ")
+    field = nodes.new("GeometryNodeGroup")
+    field.node_tree = group
+    store = nodes.new("GeometryNodeStoreNamedAttribute")
+    store.data_type, store.domain = "FLOAT", "POINT"
+    store.inputs["Name"].default_value = "test_value"
+    links = tree.links
+    links.new(position.outputs["Position"], split.inputs["Vector"])
+    links.new(split.outputs["X"], field.inputs["X"])
+    across = nodes.new("ShaderNodeMath")
+    across.operation = "ABSOLUTE"  # the group takes the distance across, either side
+    links.new(split.outputs["Y"], across.inputs[0])
+    links.new(across.outputs[0], field.inputs["Y"])
+    for name, value in constants.items():
+        field.inputs[name].default_value = value
+    links.new(into.outputs[0], store.inputs["Geometry"])
+    links.new(field.outputs[0], store.inputs["Value"])
+    links.new(store.outputs["Geometry"], out.inputs[0])
+    mesh = bpy.data.meshes.new("test points")
+    mesh.from_pydata([(x, y, 0.0) for x, y in points], [], [])
+    obj = bpy.data.objects.new("test points", mesh)
+    bpy.context.scene.collection.objects.link(obj)
+    modifier = obj.modifiers.new("field", "NODES")
+    modifier.node_group = tree
+    evaluated = obj.evaluated_get(bpy.context.evaluated_depsgraph_get())
+    values = np.empty(len(points))
+    evaluated.data.attributes["test_value"].data.foreach_get("value", values)
+    bpy.data.objects.remove(obj)
+    bpy.data.meshes.remove(mesh)
+    bpy.data.node_groups.remove(tree)
+    return values
+
+
+@pytest.fixture(scope="module")
+def kelvin(addon):
+    harness.clean_scene(width=8, height=8, samples=1)
+    wake = harness.addon("nodes.wake")
+    group = harness.addon("nodes.builder").ensure_group(wake.KELVIN_SPEC, {})
+    assert not group.is_modifier  # a field, not offered as a modifier
+    return group
+
+
+@pytest.mark.parametrize(("froude", "cell"), ((0.35, 0.0), (0.52, 0.0), (1.2, 0.0), (0.6, 2.0)))
+def test_the_kelvin_group_is_the_stationary_phase_sum_over_the_whole_patch(kelvin, froude, cell):
+    """Over the whole patch the group's values are numpy's. With 2 m cells (a wave needs four, it
+    fades out from four cells down to two) at Fr 0.6, the diverging waves 12-17° out (about 4 m
+    long, the hull's 6 m making them well) fall by a quarter; the transverse ones (13.6 m) stay."""
+    length = 6.0
+    speed = froude * math.sqrt(G * length)
+    x, y = np.meshgrid(np.linspace(0.5, 60.0, 240), np.linspace(-25.0, 25.0, 201))
+    points = np.stack([x.ravel(), y.ravel()], axis=1)
+    ours = _evaluate(kelvin, points, {"K": G / speed**2, "Length": length, "Detail": cell or 1e-6})
+    theirs = wake_heights.pattern(points[:, 0], points[:, 1], froude, length, cell)
+    scale = np.abs(theirs).max()
+    error = np.abs(ours - theirs) / scale
+    angle = np.degrees(np.arctan2(np.abs(points[:, 1]), points[:, 0]))
+    print(
+        f"Fr {froude}, cell {cell}: worst error {error.max():.2e} of the highest; rms outside 21",
+        f"degrees {math.sqrt(np.mean(ours[angle > 21.0] ** 2)) / scale:.3f}",
+    )
+    assert error.max() < 2e-3
+    far = points[:, 0] > 30.0  # past the hull's near field: Kelvin's wedge, nothing beyond it
+    outside = np.sqrt(np.mean(ours[far & (angle > 25.0)] ** 2)) / np.sqrt(
+        np.mean(ours[far & (angle < 19.0)] ** 2)
+    )
+    print("  beyond 25 degrees over within 19, 30-60 m behind:", round(float(outside), 4))
+    if froude < 1.0:  # at Fr 1.2 60 m is about one transverse wavelength: Airy's tail still spreads
+        assert outside < 0.15
+    if cell:
+        uncut = wake_heights.pattern(points[:, 0], points[:, 1], froude, length)
+        for low, high, kept in ((12.0, 17.0, (0.65, 0.85)), (0.0, 4.0, (0.99, 1.01))):
+            band = (angle > low) & (angle < high) & (points[:, 0] > 10.0)
+            ratio = np.sqrt(np.mean(ours[band] ** 2) / np.mean(uncut[band] ** 2))
+            print(f"  {low}-{high} degrees: cut over uncut {ratio:.3f}")
+            assert kept[0] < ratio < kept[1]
