@@ -43,7 +43,7 @@ where it moves through the water, and along the track behind it, drifting with `
 """
 
 from .physics import KELVIN_TAN, KELVIN_ZONE_TAN, SURFACE_TENSION, G
-from .spec import GroupSpec, Node, Socket, math, vmath
+from .spec import GroupSpec, Node, Socket, math, nest, vmath
 from .water_waves import NORMAL_ATTRIBUTE
 
 NAME = "Water Wake"
@@ -1034,6 +1034,73 @@ def _normal_nodes():
     return nodes, links
 
 
+HEIGHT_INTERFACE = GroupSpec(
+    name="Water Wake Height",
+    version=1,
+    description="Kriebel and Seelig's highest wave a hull length across, over the Kelvin "
+    "pattern's own height there: the pattern's scale",
+    tree_type="GeometryNodeTree",
+    inputs=(
+        Socket("Fr²", "NodeSocketFloat", 0.25, tooltip="U² / (g L): the hull's Froude number, squared"),
+        Socket("Draft", "NodeSocketFloat", 0.5, tooltip="How deep the hull sits (as Depth)"),
+        Socket("Depth", "NodeSocketFloat", DEPTH_DEFAULT, tooltip="The water's depth (as Draft)"),
+        Socket("Length", "NodeSocketFloat", 1.0, tooltip="The hull's length, in the height's units"),
+        Socket("Strength", "NodeSocketFloat", 1.0, tooltip="Kriebel and Seelig's β"),
+    ),
+    outputs=(Socket("Height", "NodeSocketFloat", tooltip="The pattern's scale"),),
+    nodes={},
+    links=(),
+)
+HEIGHT_CROSSINGS = (
+    {
+        "fr2:Value": "Fr²",
+        "draft_u:Value": "Draft",
+        "depth_u:Value": "Depth",
+        "length_up:Value": "Length",
+        "input:Strength": "Strength",
+    },
+    {"strength:Value": "Height"},
+)
+RING_KEYS = (
+    *("ring_lambda", "ring_k", "ring_k2", "ring_sk2", "ring_w2", "ring_w", "ring_cg_num"),
+    *("ring_cg_den", "ring_cg", "ring_front", "ring_dr", "ring_dr_l", "ring_dr2", "ring_dr2n"),
+    *("ring_env", "ring_kr", "ring_wt", "ring_phase", "ring_wave", "ring_rl", "ring_spread"),
+    *("ring_spread_s", "ring_fade_s", "ring_fade_n", "ring_fade", "ring_size"),
+    *("ring_a1", "ring_a2", "ring_a3", "ring_a4", "ring_a5"),
+)
+RING_INTERFACE = GroupSpec(
+    name="Water Wake Ring",
+    version=1,
+    description="The ring of waves an object leaves where it drops in: waves twice its beam long "
+    "round a front running out at their group speed, spreading and fading",
+    tree_type="GeometryNodeTree",
+    inputs=(
+        Socket("R", "NodeSocketFloat", 0.0, tooltip="Distance from where it dropped in"),
+        Socket("Age", "NodeSocketFloat", 0.0, tooltip="Seconds since"),
+        Socket("Beam", "NodeSocketFloat", 1.0, tooltip="Its width: the waves are twice as long"),
+        Socket("G", "NodeSocketFloat", G, tooltip="g, in the water's units"),
+        Socket("Strength", "NodeSocketFloat", 1.0, tooltip="x the height"),
+    ),
+    outputs=(
+        Socket("Height", "NodeSocketFloat", tooltip="The ring's height here"),
+        Socket("Wavelength", "NodeSocketFloat", tooltip="Its waves' length, λ = 2 x Beam"),
+        Socket("Group Speed", "NodeSocketFloat", tooltip="dω/dk, ω² = g k + (σ/ρ) k³"),
+    ),
+    nodes={},
+    links=(),
+)
+RING_CROSSINGS = (
+    {
+        "ring_r:Value": "R",
+        "ring_age:Value": "Age",
+        "beam_u:Value": "Beam",
+        "g_u:Value": "G",
+        "input:Strength": "Strength",
+    },
+    {"ring_a5:Value": "Height", "ring_lambda:Value": "Wavelength", "ring_cg:Value": "Group Speed"},
+)
+
+
 def _clamped_sample(data_type, column, label):
     """A Sample Index that reads the first or last point past either end (a track's ends)."""
     return Node(
@@ -1583,10 +1650,14 @@ def _spec():
     assert not set(more_nodes) & set(nodes), set(more_nodes) & set(nodes)
     nodes |= more_nodes
     links += more_links
+    nodes, links, height = nest(
+        nodes, links, _height_nodes()[0], HEIGHT_INTERFACE, ("height_group", 30), *HEIGHT_CROSSINGS
+    )
+    nodes, links, ring = nest(nodes, links, RING_KEYS, RING_INTERFACE, ("ring_group", 30), *RING_CROSSINGS)
     return GroupSpec(
         name=NAME,
-        version=7,
-        includes=(KELVIN_SPEC,),
+        version=8,
+        includes=(KELVIN_SPEC, height, ring),
         description="The Kelvin wake, rings and foam of one moving object (its track kept by a "
         "simulation zone)",
         tree_type="GeometryNodeTree",
@@ -1680,3 +1751,4 @@ def _spec():
 
 
 SPEC = _spec()
+HEIGHT_SPEC, RING_SPEC = SPEC.includes[1:]

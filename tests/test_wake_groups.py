@@ -5,6 +5,14 @@
   group's values are `tools/wake_heights.py`'s `pattern` (the stationary-phase sum the group is
   written after, its two roots, Airy's width on the arms and the fall beyond them) to float
   precision; with a mesh cell given, the same with the waves too short for the mesh faded out.
+* `Water Wake Height` (the pattern's scale): times the pattern's own crest-to-trough height a
+  hull length across (numpy's, `wake_heights.crest_to_trough`), it is Kriebel and Seelig's
+  (2005) highest wave there within 6%, over Froude numbers 0.3 to 2.5 and drafts 0 to 2 m on 4 m
+  of water.
+* `Water Wake Ring`: over 0 to 8 m and 0 to 5 s from where a 0.4 m object dropped in, the
+  waves 0.8 m long whose envelope's front runs at the group speed numpy works out from the
+  dispersion relation itself (`ω² = g k + (σ/ρ) k³`, differentiated numerically), spreading as
+  the front grows and fading over 4 s.
 """
 
 import math
@@ -19,9 +27,10 @@ import harness
 G = 9.81
 
 
-def _evaluate(group, points, constants):
-    """The group's one float output at `points` (N, 2) as X and Y, its other inputs `constants`,
-    through a modifier on a mesh of those points (no faces)."""
+def _evaluate(group, points, constants, axes=("X", "Y"), output=0, absolute=True):
+    """The group's float output `output` at `points` (N, 2), their x and y its inputs `axes`
+    (y taken as |y| when `absolute`), its other inputs `constants`, through a modifier on a mesh
+    of those points (no faces)."""
     tree = bpy.data.node_groups.new("test: evaluate a field group", "GeometryNodeTree")
     tree.interface.new_socket("Geometry", in_out="INPUT", socket_type="NodeSocketGeometry")
     tree.interface.new_socket("Geometry", in_out="OUTPUT", socket_type="NodeSocketGeometry")
@@ -36,15 +45,16 @@ def _evaluate(group, points, constants):
     store.inputs["Name"].default_value = "test_value"
     links = tree.links
     links.new(position.outputs["Position"], split.inputs["Vector"])
-    links.new(split.outputs["X"], field.inputs["X"])
+    links.new(split.outputs["X"], field.inputs[axes[0]])
     across = nodes.new("ShaderNodeMath")
-    across.operation = "ABSOLUTE"  # the group takes the distance across, either side
+    across.operation = "ABSOLUTE" if absolute else "ADD"  # the Kelvin group takes |y|
+    across.inputs[1].default_value = 0.0
     links.new(split.outputs["Y"], across.inputs[0])
-    links.new(across.outputs[0], field.inputs["Y"])
+    links.new(across.outputs[0], field.inputs[axes[1]])
     for name, value in constants.items():
         field.inputs[name].default_value = value
     links.new(into.outputs[0], store.inputs["Geometry"])
-    links.new(field.outputs[0], store.inputs["Value"])
+    links.new(field.outputs[output], store.inputs["Value"])
     links.new(store.outputs["Geometry"], out.inputs[0])
     mesh = bpy.data.meshes.new("test points")
     mesh.from_pydata([(x, y, 0.0) for x, y in points], [], [])
@@ -103,3 +113,58 @@ def test_the_kelvin_group_is_the_stationary_phase_sum_over_the_whole_patch(kelvi
             ratio = np.sqrt(np.mean(ours[band] ** 2) / np.mean(uncut[band] ** 2))
             print(f"  {low}-{high} degrees: cut over uncut {ratio:.3f}")
             assert kept[0] < ratio < kept[1]
+
+
+def _kriebel_seelig(froude, length, draft, depth, beta=1.0, block=0.6):
+    """Their highest wave a hull length across, crest to trough (see `test_wake.py`)."""
+    raised = min(froude * math.exp(2.35 * (1.0 - block) * draft / depth), 0.5)
+    return beta * (raised - 0.1) ** 2 * min(froude, 0.5) ** 2 * length
+
+
+def test_the_height_group_times_the_patterns_height_is_kriebel_and_seeligs(addon):
+    harness.clean_scene(width=8, height=8, samples=1)
+    wake = harness.addon("nodes.wake")
+    group = harness.addon("nodes.builder").ensure_group(wake.HEIGHT_SPEC, {})
+    length, depth = 4.0, 4.0
+    froudes = np.array([0.3, 0.35, 0.4, 0.5, 0.7, 1.0, 1.5, 2.5])
+    drafts = np.array([0.0, 0.5, 1.0, 2.0])
+    points = np.array([(f * f, d) for f in froudes for d in drafts])
+    ours = _evaluate(
+        group, points, {"Depth": depth, "Length": length, "Strength": 1.0}, ("Fr²", "Draft"), absolute=False
+    )
+    worst = 0.0
+    for (fr2, draft), scale in zip(points, ours, strict=True):
+        froude = math.sqrt(fr2)
+        theirs = _kriebel_seelig(froude, length, draft, depth)
+        made = scale * wake_heights.crest_to_trough(froude)  # the pattern is in hull lengths
+        worst = max(worst, abs(made / theirs - 1.0))
+        assert made == pytest.approx(theirs, rel=0.06), (froude, draft)
+    print("height group: worst", round(worst, 4), "off Kriebel and Seelig's")
+
+
+def _ring_model(r, t, beam, strength=1.0, g=9.81, tension=0.0728 / 998.0):
+    """The ring from the dispersion relation, the group speed by differentiating it."""
+    wavelength = 2.0 * beam
+    k = 2.0 * math.pi / wavelength
+    omega = lambda k: np.sqrt(g * k + tension * k**3)  # noqa: E731
+    group_speed = float((omega(k * 1.0001) - omega(k * 0.9999)) / (k * 0.0002))
+    front = group_speed * t
+    envelope = np.exp(-(((r - front) / wavelength) ** 2))
+    spreading = np.sqrt(wavelength / (front + wavelength))
+    return 0.3 * beam * strength * envelope * spreading * np.exp(-t / 4.0) * np.cos(k * r - omega(k) * t)
+
+
+def test_the_ring_group_runs_out_at_the_group_speed_spreading_and_fading(addon):
+    harness.clean_scene(width=8, height=8, samples=1)
+    wake = harness.addon("nodes.wake")
+    group = harness.addon("nodes.builder").ensure_group(wake.RING_SPEC, {})
+    beam = 0.4
+    r, t = np.meshgrid(np.linspace(0.0, 8.0, 321), np.linspace(0.0, 5.0, 101))
+    points = np.stack([r.ravel(), t.ravel()], axis=1)
+    constants = {"Beam": beam, "G": 9.81, "Strength": 1.5}
+    ours = _evaluate(group, points, constants, ("R", "Age"), absolute=False)
+    theirs = _ring_model(points[:, 0], points[:, 1], beam, 1.5)
+    error = np.abs(ours - theirs).max() / np.abs(theirs).max()
+    speed = _evaluate(group, points[:1], constants, ("R", "Age"), output=2, absolute=False)[0]
+    print("ring group: worst", round(float(error), 5), "of the highest; group speed", round(float(speed), 4))
+    assert error < 2e-3
