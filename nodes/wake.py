@@ -102,6 +102,7 @@ def _track_nodes():
         ),
         "flat": vmath("MULTIPLY", 2, "on the water's plane", b=(1.0, 1.0, 0.0)),
         "clock": Node("GeometryNodeInputSceneTime", 1, label="seconds"),
+        "track_clock": Node("GeometryNodeInputSceneTime", 1, label="seconds"),
         "sim_in": Node(
             "GeometryNodeSimulationInput",
             3,
@@ -166,7 +167,7 @@ def _track_nodes():
         ("direction:Vector", "heading:B"),
         ("flat:Vector", "point:Position"),
         ("point:Points", "store_time:Geometry"),
-        ("clock:Seconds", "store_time:Value"),
+        ("track_clock:Seconds", "store_time:Value"),
         ("store_time:Geometry", "store_speed:Geometry"),
         ("speed:Value", "store_speed:Value"),
         ("store_speed:Geometry", "store_arc:Geometry"),
@@ -176,7 +177,7 @@ def _track_nodes():
         ("store_heading:Geometry", "join:Geometry"),
         ("sim_in:Track", "join:Geometry"),
         ("join:Geometry", "drop:Geometry"),
-        ("clock:Seconds", "point_age:#0"),
+        ("track_clock:Seconds", "point_age:#0"),
         ("old_time:Attribute", "point_age:#1"),
         ("point_age:Value", "too_old:#0"),
         ("input:Keep", "too_old:#1"),
@@ -266,11 +267,11 @@ def _ring_nodes():
         ("entered:Value", "ring_point:Count"),
         ("flat:Vector", "ring_point:Position"),
         ("ring_point:Points", "store_ring:Geometry"),
-        ("clock:Seconds", "store_ring:Value"),
+        ("track_clock:Seconds", "store_ring:Value"),
         ("store_ring:Geometry", "rings_join:Geometry"),
         ("sim_in:Rings", "rings_join:Geometry"),
         ("rings_join:Geometry", "rings_drop:Geometry"),
-        ("clock:Seconds", "ring_age_old:#0"),
+        ("track_clock:Seconds", "ring_age_old:#0"),
         ("ring_time_old:Attribute", "ring_age_old:#1"),
         ("ring_age_old:Value", "ring_gone:#0"),
         ("ring_gone:Value", "rings_drop:Selection"),
@@ -1100,6 +1101,40 @@ RING_CROSSINGS = (
     {"ring_a5:Value": "Height", "ring_lambda:Value": "Wavelength", "ring_cg:Value": "Group Speed"},
 )
 
+RING_SPAWN_KEYS = (
+    *("src_split", "was_above", "now_below", "crossed", "entered", "ring_point", "store_ring"),
+    *("rings_join", "ring_time_old", "ring_age_old", "ring_gone", "rings_drop"),
+)
+TRACK_INTERFACE = GroupSpec(
+    name="Water Wake Track",
+    version=1,
+    description="Where an object has been: a point a step (its time, speed, distance come and "
+    "heading), those older than Keep dropped; and a ring point where it dropped into the water",
+    tree_type="GeometryNodeTree",
+    inputs=(
+        Socket("Source", "NodeSocketObject", tooltip="The object followed"),
+        Socket("Keep", "NodeSocketFloat", 30.0, tooltip="Seconds of track kept"),
+    ),
+    outputs=(
+        Socket(
+            "Track",
+            "NodeSocketGeometry",
+            tooltip="A point a step: wake_time, wake_speed, wake_arc, wake_heading",
+        ),
+        Socket("Rings", "NodeSocketGeometry", tooltip="A point where it dropped in (wake_ring_time), 12 s"),
+        Socket("Arc", "NodeSocketFloat", tooltip="The distance it has come"),
+        Socket("Heading", "NodeSocketVector", tooltip="Its heading on the plane"),
+        Socket("Last", "NodeSocketVector", tooltip="Where it is, on the plane"),
+        Socket("Speed", "NodeSocketFloat", tooltip="Its speed this step"),
+    ),
+    nodes={},
+    links=(),
+)
+TRACK_CROSSINGS = (
+    {"input:Source": "Source", "input:Keep": "Keep"},
+    {f"sim_out:{name}": name for name in ("Track", "Rings", "Arc", "Heading", "Last", "Speed")},
+)
+
 
 def _clamped_sample(data_type, column, label):
     """A Sample Index that reads the first or last point past either end (a track's ends)."""
@@ -1654,10 +1689,14 @@ def _spec():
         nodes, links, _height_nodes()[0], HEIGHT_INTERFACE, ("height_group", 30), *HEIGHT_CROSSINGS
     )
     nodes, links, ring = nest(nodes, links, RING_KEYS, RING_INTERFACE, ("ring_group", 30), *RING_CROSSINGS)
+    track_keys = (*(key for key in _track_nodes()[0] if key != "clock"), *RING_SPAWN_KEYS)
+    nodes, links, track = nest(
+        nodes, links, track_keys, TRACK_INTERFACE, ("track_group", 6), *TRACK_CROSSINGS
+    )
     return GroupSpec(
         name=NAME,
-        version=8,
-        includes=(KELVIN_SPEC, height, ring),
+        version=9,
+        includes=(KELVIN_SPEC, height, ring, track),
         description="The Kelvin wake, rings and foam of one moving object (its track kept by a "
         "simulation zone)",
         tree_type="GeometryNodeTree",
@@ -1751,4 +1790,4 @@ def _spec():
 
 
 SPEC = _spec()
-HEIGHT_SPEC, RING_SPEC = SPEC.includes[1:]
+HEIGHT_SPEC, RING_SPEC, TRACK_SPEC = SPEC.includes[1:]

@@ -490,7 +490,7 @@ def test_a_turning_hull_leaves_its_foam_along_the_bend(addon, eevee):
 def _nearest_instead_of_walked(group):
     """The group, each water point's track point (and drifted track point) found by a
     nearest-point search instead of walked to: the costly way, right everywhere."""
-    for walked, geometry in (("tw_i2", "sim_out"), ("dw_i1", "drifted")):
+    for walked, geometry in (("tw_i2", "track_group"), ("dw_i1", "drifted")):
         nearest = group.nodes.new("GeometryNodeSampleNearest")
         nearest.domain = "POINT"
         position = group.nodes.new("GeometryNodeInputPosition")

@@ -13,6 +13,10 @@
   waves 0.8 m long whose envelope's front runs at the group speed numpy works out from the
   dispersion relation itself (`ω² = g k + (σ/ρ) k³`, differentiated numerically), spreading as
   the front grows and fading over 4 s.
+* `Water Wake Track` (the simulation zone): an object running, turning and dropping through
+  the plane of a turned, moved water, stepped frame by frame: its points are numpy's (place in
+  the water's space, time, speed, distance come, heading), those older than Keep dropped, and
+  its ring where and when it went in.
 """
 
 import math
@@ -168,3 +172,126 @@ def test_the_ring_group_runs_out_at_the_group_speed_spreading_and_fading(addon):
     speed = _evaluate(group, points[:1], constants, ("R", "Age"), output=2, absolute=False)[0]
     print("ring group: worst", round(float(error), 5), "of the highest; group speed", round(float(speed), 4))
     assert error < 2e-3
+
+
+FPS = 24
+
+
+def _path(frame):
+    """Where the test's object is at `frame`: a turning run (3 m/s, curving at 0.4 m/s²) that
+    drops through the water's plane at 1 s."""
+    t = frame / FPS
+    return np.array([3.0 * t, 0.2 * t * t, 1.0 - t])
+
+
+def _track_model(frames, keep, to_water):
+    """The track numpy keeps: a point a frame (from the first), its time, speed (0 on the first
+    step), distance come and heading (the last one kept while still), older than `keep` dropped;
+    a ring where the origin crossed the plane downwards. `to_water` maps world points to the
+    water's own space."""
+    points, rings = [], []
+    last = to_water(_path(frames[0]))
+    arc, heading = 0.0, np.array([1.0, 0.0, 0.0])
+    for step, frame in enumerate(frames):
+        here = to_water(_path(frame))
+        flat = here * (1.0, 1.0, 0.0)
+        moved = np.linalg.norm(flat - last * (1.0, 1.0, 0.0)) if step else 0.0
+        speed = moved / (1.0 / FPS if step else 1e-4)
+        arc += moved
+        if moved > 1e-4:
+            heading = (flat - last * (1.0, 1.0, 0.0)) / moved
+        if step and last[2] > 0.0 and here[2] < 1e-4:
+            rings.append((flat, frame / FPS))
+        points.append((flat, frame / FPS, speed, arc, heading))
+        last = here
+    now = frames[-1] / FPS
+    return [p for p in points if now - p[1] <= keep], rings, (arc, heading, speed, flat)
+
+
+def _track_tree(group, output):
+    """A modifier tree: the track group's `output` geometry as vertices, with the group's single
+    values stored on them (test_arc, test_heading, test_last, test_speed)."""
+    tree = bpy.data.node_groups.new("test: a track", "GeometryNodeTree")
+    tree.interface.new_socket("Geometry", in_out="INPUT", socket_type="NodeSocketGeometry")
+    tree.interface.new_socket("Geometry", in_out="OUTPUT", socket_type="NodeSocketGeometry")
+    nodes, links = tree.nodes, tree.links
+    out = nodes.new("NodeGroupOutput")
+    track = nodes.new("GeometryNodeGroup")
+    track.node_tree = group
+    vertices = nodes.new("GeometryNodePointsToVertices")
+    links.new(track.outputs[output], vertices.inputs["Points"])
+    geometry = vertices.outputs["Mesh"]
+    singles = (("Arc", "FLOAT"), ("Heading", "FLOAT_VECTOR"), ("Last", "FLOAT_VECTOR"), ("Speed", "FLOAT"))
+    for name, data_type in singles:
+        store = nodes.new("GeometryNodeStoreNamedAttribute")
+        store.data_type, store.domain = data_type, "POINT"
+        store.inputs["Name"].default_value = "test_" + name.lower()
+        links.new(geometry, store.inputs["Geometry"])
+        links.new(track.outputs[name], store.inputs["Value"])
+        geometry = store.outputs["Geometry"]
+    links.new(geometry, out.inputs[0])
+    return tree, track
+
+
+def _read(mesh, name, width):
+    values = np.empty(len(mesh.vertices) * width)
+    mesh.attributes[name].data.foreach_get("vector" if width == 3 else "value", values)
+    return values.reshape(-1, width) if width == 3 else values
+
+
+@pytest.mark.lts  # a simulation zone in a nested group, on every version
+def test_the_track_group_keeps_where_the_object_has_been_as_numpy_does(addon):
+    """An object running and turning on a water turned 30° and moved, dropping through its plane
+    at 1 s: after 2 s, with Keep 1.2 s, the track group's points are numpy's (each frame's place
+    in the water's space, time, speed, distance come and heading, the older dropped), its ring is
+    where and when the object went in, and its single values are the last step's."""
+    scene = harness.clean_scene(width=8, height=8, samples=1)
+    scene.render.fps = FPS
+    wake = harness.addon("nodes.wake")
+    group = harness.addon("nodes.builder").ensure_group(wake.TRACK_SPEC, {})
+    assert not group.is_modifier
+    source = bpy.data.objects.new("test source", None)
+    scene.collection.objects.link(source)
+    frames = list(range(1, 49))
+    for frame in frames:
+        source.location = _path(frame)
+        source.keyframe_insert("location", frame=frame)
+    scene.frame_set(1)  # the object where its keys put it before the simulation starts
+    carriers = []
+    for output in ("Track", "Rings"):
+        tree, node = _track_tree(group, output)
+        node.inputs["Source"].default_value = source
+        node.inputs["Keep"].default_value = 1.2
+        mesh = bpy.data.meshes.new("test carrier")
+        carrier = bpy.data.objects.new("test carrier", mesh)
+        carrier.location, carrier.rotation_euler = (2.0, -1.0, 0.0), (0.0, 0.0, math.radians(30.0))
+        scene.collection.objects.link(carrier)
+        carrier.modifiers.new("track", "NODES").node_group = tree
+        carriers.append(carrier)
+    bpy.context.view_layer.update()
+    inverse = np.array(carriers[0].matrix_world.inverted())
+    kept, rings, (arc, heading, speed, last) = _track_model(frames, 1.2, lambda p: (inverse @ (*p, 1.0))[:3])
+    for frame in frames:
+        scene.frame_set(frame)
+    depsgraph = bpy.context.evaluated_depsgraph_get()
+    track, ring = (carrier.evaluated_get(depsgraph).data for carrier in carriers)
+    order = np.argsort(_read(track, "wake_time", 1))
+    positions = np.array([v.co[:] for v in track.vertices])[order]
+    assert len(order) == len(kept) == 29  # 1.2 s of frames, and the one at its edge
+    assert np.abs(positions - [p[0] for p in kept]).max() < 1e-4
+    for name, index, width, tolerance in (
+        ("wake_time", 1, 1, 1e-5),
+        ("wake_speed", 2, 1, 1e-3),
+        ("wake_arc", 3, 1, 1e-4),
+        ("wake_heading", 4, 3, 1e-4),
+    ):
+        ours = _read(track, name, width)[order]
+        assert np.abs(ours - np.array([p[index] for p in kept])).max() < tolerance, name
+    assert _read(track, "test_arc", 1)[0] == pytest.approx(arc, abs=1e-4)
+    assert _read(track, "test_speed", 1)[0] == pytest.approx(speed, abs=1e-3)
+    assert np.abs(_read(track, "test_heading", 3)[0] - heading).max() < 1e-4
+    assert np.abs(_read(track, "test_last", 3)[0] - last).max() < 1e-4
+    assert len(rings) == len(ring.vertices) == 1
+    assert np.abs(np.array(ring.vertices[0].co[:]) - rings[0][0]).max() < 1e-4
+    assert _read(ring, "wake_ring_time", 1)[0] == pytest.approx(rings[0][1], abs=1e-5)
+    print("track group:", len(kept), "points; arc", round(arc, 3), "m; speed", round(speed, 3), "m/s")
