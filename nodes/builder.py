@@ -54,8 +54,11 @@ def ensure_group(spec, specs, name=None, image=None, foam=None):
     created = tree is None
     if created:
         tree = bpy.data.node_groups.new(name or spec.name, spec.tree_type)
-    if spec.tree_type == "GeometryNodeTree":  # a modifier, offered in the Add Modifier menu
-        tree.is_modifier = any(socket.kind == "NodeSocketGeometry" for socket in spec.inputs)
+    if spec.tree_type == "GeometryNodeTree":  # geometry in and out: a modifier, in the Add Modifier menu
+        tree.is_modifier = all(
+            any(socket.kind == "NodeSocketGeometry" for socket in sockets)
+            for sockets in (spec.inputs, spec.outputs)
+        )
     try:
         _sync_interface(tree, spec)
         _rebuild_nodes(tree, spec, images, nested)

@@ -1135,6 +1135,47 @@ TRACK_CROSSINGS = (
     {f"sim_out:{name}": name for name in ("Track", "Rings", "Arc", "Heading", "Last", "Speed")},
 )
 
+FOAM_INTERFACE = GroupSpec(
+    name="Water Wake Foam",
+    version=1,
+    description="Foam round a moving hull and along its drifted trail, widening and fading with "
+    "age, over the foam of wakes before",
+    tree_type="GeometryNodeTree",
+    inputs=(
+        Socket("Position", "NodeSocketVector", tooltip="The water point, on the plane"),
+        Socket("Trail", "NodeSocketGeometry", tooltip="The track's points, drifted (wake_time, wake_speed)"),
+        Socket("Foot", "NodeSocketInt", 0, tooltip="The trail's point nearest along it"),
+        Socket("Time", "NodeSocketFloat", 0.0, tooltip="Seconds now"),
+        Socket("Last", "NodeSocketVector", tooltip="Where the hull is, on the plane"),
+        Socket("Heading", "NodeSocketVector", (1.0, 0.0, 0.0), tooltip="Its heading"),
+        Socket("Speed", "NodeSocketFloat", 0.0, tooltip="Its speed now"),
+        Socket("Length", "NodeSocketFloat", 10.0, tooltip="The hull's length"),
+        Socket("Beam", "NodeSocketFloat", 3.0, tooltip="Its width"),
+        Socket("Foam Fade", "NodeSocketFloat", 6.0, tooltip="Seconds over which the foam fades to a third"),
+    ),
+    outputs=(
+        Socket("Foam", "NodeSocketFloat", tooltip=f"This wake's foam or, where more, '{FOAM_ATTRIBUTE}'"),
+    ),
+    nodes={},
+    links=(),
+)
+FOAM_CROSSINGS = (
+    {
+        "p_flat:Vector": "Position",
+        "drifted:Geometry": "Trail",
+        DRIFTED_INDEX: "Foot",
+        "clock:Seconds": "Time",
+        "sim_out:Last": "Last",
+        "sim_out:Heading": "Heading",
+        "sim_out:Speed": "Speed",
+        "length_u:Value": "Length",
+        "beam_u:Value": "Beam",
+        "input:Foam Fade": "Foam Fade",
+    },
+    {"foam:Value": "Foam"},
+)
+FOAM_OUTSIDE = ("t_age", "drift", "drift_flat", "drifted", "store_foam")  # the drift feeds the walk too
+
 
 def _clamped_sample(data_type, column, label):
     """A Sample Index that reads the first or last point past either end (a track's ends)."""
@@ -1225,6 +1266,8 @@ def _foam_nodes():
         "d_i_ahead": math("ADD", 20, "the point after", b=1.0),
         "d_back_end": _clamped_sample("FLOAT_VECTOR", 21, "the point before it"),
         "d_ahead_end": _clamped_sample("FLOAT_VECTOR", 21, "the point after it"),
+        "f_time": _named("wake_time", "FLOAT", 17, "when each was"),
+        "f_speed": _named("wake_speed", "FLOAT", 17, "its speed then"),
         "d_age": math("SUBTRACT", 18, "each track point's age"),
         "d_spread": math("MULTIPLY", 23, "0.1 m/s x age", b=0.1),
         "third_beam": math("MULTIPLY", 23, "B / 3", b=1.0 / 3.0),
@@ -1305,7 +1348,7 @@ def _foam_nodes():
         ("d_back_dist:Value", "d_distance:#0"),
         ("d_ahead_dist:Value", "d_distance:#1"),
         ("clock:Seconds", "d_age:#0"),
-        ("t_time:Attribute", "d_age:#1"),
+        ("f_time:Attribute", "d_age:#1"),
         ("d_age:Value", "d_spread:#0"),
         ("input:Beam", "third_beam:#0"),
         ("third_beam:Value", "d_width:#0"),
@@ -1320,7 +1363,7 @@ def _foam_nodes():
         ("input:Foam Fade", "d_age_s:#1"),
         ("d_age_s:Value", "d_age_n:#0"),
         ("d_age_n:Value", "d_fade:#0"),
-        ("t_speed:Attribute", "d_moving:#0"),
+        ("f_speed:Attribute", "d_moving:#0"),
         ("d_moving:Value", "d_moving_c:Value"),
         ("d_fade:Value", "d_f1:#0"),
         ("d_moving_c:Result", "d_f1:#1"),
@@ -1689,14 +1732,16 @@ def _spec():
         nodes, links, _height_nodes()[0], HEIGHT_INTERFACE, ("height_group", 30), *HEIGHT_CROSSINGS
     )
     nodes, links, ring = nest(nodes, links, RING_KEYS, RING_INTERFACE, ("ring_group", 30), *RING_CROSSINGS)
+    foam_keys = [key for key in _foam_nodes()[0] if key not in FOAM_OUTSIDE]
+    nodes, links, foam = nest(nodes, links, foam_keys, FOAM_INTERFACE, ("foam_group", 32), *FOAM_CROSSINGS)
     track_keys = (*(key for key in _track_nodes()[0] if key != "clock"), *RING_SPAWN_KEYS)
     nodes, links, track = nest(
         nodes, links, track_keys, TRACK_INTERFACE, ("track_group", 6), *TRACK_CROSSINGS
     )
     return GroupSpec(
         name=NAME,
-        version=9,
-        includes=(KELVIN_SPEC, height, ring, track),
+        version=10,
+        includes=(KELVIN_SPEC, height, ring, foam, track),
         description="The Kelvin wake, rings and foam of one moving object (its track kept by a "
         "simulation zone)",
         tree_type="GeometryNodeTree",
@@ -1790,4 +1835,4 @@ def _spec():
 
 
 SPEC = _spec()
-HEIGHT_SPEC, RING_SPEC, TRACK_SPEC = SPEC.includes[1:]
+HEIGHT_SPEC, RING_SPEC, FOAM_SPEC, TRACK_SPEC = SPEC.includes[1:]

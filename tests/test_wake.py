@@ -594,12 +594,18 @@ def _with_feet(group):
     point (`test_dfoot`): the points its wake and its foam are worked out from."""
     output = group.nodes["drop_zone"]
     last = output.inputs["Geometry"].links[0].from_socket
-    for name, key in (("test_foot", "at_position"), ("test_dfoot", "d_at_position")):
+    # The drifted foot is sampled inside the foam's group: sampled here again, from its index.
+    drifted_foot = group.nodes.new("GeometryNodeSampleIndex")
+    drifted_foot.data_type, drifted_foot.domain = "FLOAT_VECTOR", "POINT"
+    group.links.new(group.nodes["drifted"].outputs[0], drifted_foot.inputs["Geometry"])
+    group.links.new(group.nodes.new("GeometryNodeInputPosition").outputs[0], drifted_foot.inputs["Value"])
+    group.links.new(group.nodes["dw_i1"].outputs[0], drifted_foot.inputs["Index"])
+    for name, foot in (("test_foot", group.nodes["at_position"]), ("test_dfoot", drifted_foot)):
         store = group.nodes.new("GeometryNodeStoreNamedAttribute")
         store.data_type = "FLOAT_VECTOR"
         store.inputs["Name"].default_value = name
         group.links.new(last, store.inputs["Geometry"])
-        group.links.new(group.nodes[key].outputs[0], store.inputs["Value"])
+        group.links.new(foot.outputs[0], store.inputs["Value"])
         last = store.outputs[0]
     group.links.new(last, output.inputs["Geometry"])
     return group

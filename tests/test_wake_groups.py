@@ -17,6 +17,8 @@
   the plane of a turned, moved water, stepped frame by frame: its points are numpy's (place in
   the water's space, time, speed, distance come, heading), those older than Keep dropped, and
   its ring where and when it went in.
+* `Water Wake Foam`: round a hull heading 30° and along a curving trail of points 4 m apart,
+  over foam already there, numpy's foam over the whole patch, unbroken along the trail's line.
 """
 
 import math
@@ -295,3 +297,124 @@ def test_the_track_group_keeps_where_the_object_has_been_as_numpy_does(addon):
     assert np.abs(np.array(ring.vertices[0].co[:]) - rings[0][0]).max() < 1e-4
     assert _read(ring, "wake_ring_time", 1)[0] == pytest.approx(rings[0][1], abs=1e-5)
     print("track group:", len(kept), "points; arc", round(arc, 3), "m; speed", round(speed, 3), "m/s")
+
+
+def _segment_distance(p, start, end):
+    d = end - start
+    t = np.clip(np.sum((p - start) * d, axis=1) / (np.sum(d * d, axis=1) + 1e-9), 0.0, 1.0)
+    return np.linalg.norm(p - (start + d * t[:, None]), axis=1)
+
+
+def _foam_model(p, trail, times, speeds, foot, now, last, heading, speed, length, beam, fade, before):
+    """Foam as docs/MODEL.md says: round the hull (within half its beam of the line from stern to
+    bow, falling to nothing a quarter beam further, x its speed up to 1 m/s) and along the
+    trail's line (a Gaussian B / 3 wide, widening 0.1 m/s with age, x 0.7, fading over Foam Fade,
+    x the speed it had), over the foam there before."""
+    v = p - last
+    along = np.clip(v @ heading, -length / 2, length / 2)
+    side = np.linalg.norm(v - along[:, None] * heading, axis=1)
+    hull = np.clip(1.0 - (side - beam / 2) / (beam / 4), 0.0, 1.0) * min(max(speed, 0.0), 1.0)
+    n = len(trail)
+    at = trail[foot]
+    line = np.minimum(
+        _segment_distance(p, at, trail[np.clip(foot - 1, 0, n - 1)]),
+        _segment_distance(p, at, trail[np.clip(foot + 1, 0, n - 1)]),
+    )
+    age = now - times[foot]
+    width = beam / 3 + 0.1 * age
+    weight = 0.7 * np.exp(-age / fade) * np.clip(speeds[foot], 0.0, 1.0)
+    return np.maximum(before, np.maximum(hull, np.exp(-((line / width) ** 2)) * weight)), line
+
+
+def _mesh_object(name, points, attributes):
+    mesh = bpy.data.meshes.new(name)
+    mesh.from_pydata([(*point, 0.0) for point in points], [], [])
+    for attribute, (data_type, values) in attributes.items():
+        mesh.attributes.new(attribute, data_type, "POINT").data.foreach_set("value", values)
+    obj = bpy.data.objects.new(name, mesh)
+    bpy.context.scene.collection.objects.link(obj)
+    return obj
+
+
+def test_the_foam_group_lies_round_the_hull_and_along_the_trails_line_as_numpy_says(addon):
+    """A hull heading 30° with a curving trail of points 4 m apart (a fast boat's: a point a frame
+    at 96 m/s), some of it slower than 1 m/s, over foam already there: over the whole 70 x 50 m
+    patch the foam group's values are numpy's, and along the trail's line it is unbroken between
+    its points (the line, not its points)."""
+    harness.clean_scene(width=8, height=8, samples=1)
+    wake = harness.addon("nodes.wake")
+    group = harness.addon("nodes.builder").ensure_group(wake.FOAM_SPEC, {})
+    assert not group.is_modifier
+    turn = math.radians(30.0)
+    rotation = np.array([[math.cos(turn), -math.sin(turn)], [math.sin(turn), math.cos(turn)]])
+    behind = np.arange(15) * 4.0
+    trail = np.stack([-behind, 0.01 * behind**2], axis=1) @ rotation.T
+    now, times = 10.0, 10.0 - np.arange(15) * 0.3
+    speeds = np.where(np.arange(15) > 10, 0.4, 96.0)  # the oldest slower than 1 m/s
+    x, y = np.meshgrid(np.linspace(-60.0, 10.0, 141), np.linspace(-25.0, 25.0, 101))
+    points = np.stack([x.ravel(), y.ravel()], axis=1)
+    foot = np.argmin(np.linalg.norm(points[:, None, :] - trail[None], axis=2), axis=1)
+    before = np.random.default_rng(3).uniform(0.0, 0.3, len(points))
+    heading = rotation @ (1.0, 0.0)
+    length, beam, fade, speed = 6.0, 2.4, 2.0, 0.6
+    trail_object = _mesh_object(
+        "test trail", trail, {"wake_time": ("FLOAT", times), "wake_speed": ("FLOAT", speeds)}
+    )
+    water = _mesh_object(
+        "test water",
+        points,
+        {"test_foot": ("INT", foot.astype(np.int32)), wake.FOAM_ATTRIBUTE: ("FLOAT", before)},
+    )
+    tree = bpy.data.node_groups.new("test: foam", "GeometryNodeTree")
+    tree.interface.new_socket("Geometry", in_out="INPUT", socket_type="NodeSocketGeometry")
+    tree.interface.new_socket("Geometry", in_out="OUTPUT", socket_type="NodeSocketGeometry")
+    nodes, links = tree.nodes, tree.links
+    into, out = nodes.new("NodeGroupInput"), nodes.new("NodeGroupOutput")
+    info = nodes.new("GeometryNodeObjectInfo")
+    info.inputs["Object"].default_value = trail_object
+    to_points = nodes.new("GeometryNodeMeshToPoints")
+    foot_read = nodes.new("GeometryNodeInputNamedAttribute")
+    foot_read.data_type = "INT"
+    foot_read.inputs["Name"].default_value = "test_foot"
+    position = nodes.new("GeometryNodeInputPosition")
+    foam = nodes.new("GeometryNodeGroup")
+    foam.node_tree = group
+    store = nodes.new("GeometryNodeStoreNamedAttribute")
+    store.data_type, store.domain = "FLOAT", "POINT"
+    store.inputs["Name"].default_value = "test_foam"
+    links.new(info.outputs["Geometry"], to_points.inputs["Mesh"])
+    links.new(to_points.outputs["Points"], foam.inputs["Trail"])
+    links.new(foot_read.outputs["Attribute"], foam.inputs["Foot"])
+    links.new(position.outputs["Position"], foam.inputs["Position"])
+    for name, value in (
+        ("Time", now),
+        ("Last", (0.0, 0.0, 0.0)),
+        ("Heading", (*heading, 0.0)),
+        ("Speed", speed),
+        ("Length", length),
+        ("Beam", beam),
+        ("Foam Fade", fade),
+    ):
+        foam.inputs[name].default_value = value
+    links.new(into.outputs[0], store.inputs["Geometry"])
+    links.new(foam.outputs["Foam"], store.inputs["Value"])
+    links.new(store.outputs["Geometry"], out.inputs[0])
+    water.modifiers.new("foam", "NODES").node_group = tree
+    evaluated = water.evaluated_get(bpy.context.evaluated_depsgraph_get()).data
+    ours = np.empty(len(points))
+    evaluated.attributes["test_foam"].data.foreach_get("value", ours)
+    theirs, line = _foam_model(
+        points, trail, times, speeds, foot, now, np.zeros(2), heading, speed, length, beam, fade, before
+    )
+    worst = np.abs(ours - theirs).max()
+    on_line = (line < 0.1) & (np.linalg.norm(points, axis=1) > length) & (foot < 10)
+    weight = 0.7 * np.exp(-(now - times[foot]) / fade)  # the trail's foam at its points there
+    kept = (ours[on_line] / weight[on_line]).min()
+    at_hull = ours[np.linalg.norm(points, axis=1) < 1.0].min()
+    print(
+        f"foam group: worst {worst:.2e}; on the trail's line (fast part) at least {kept:.3f} of its",
+        f"points' ({on_line.sum()} points); round the hull {at_hull:.3f}",
+    )
+    assert worst < 1e-4
+    assert on_line.sum() > 20 and kept > 0.95  # unbroken between points 4 m apart
+    assert theirs.max() > 0.55 and (theirs > before + 0.05).mean() > 0.02  # the foam is there to see
