@@ -1035,22 +1035,32 @@ def _normal_nodes():
     return nodes, links
 
 
-HEIGHT_INTERFACE = GroupSpec(
-    name="Water Wake Height",
-    version=1,
-    description="Kriebel and Seelig's highest wave a hull length across, over the Kelvin "
+def _interface(name, description, inputs, outputs):
+    """The sockets of a part carved out by `nest` (which fills its nodes and links)."""
+    return GroupSpec(
+        name=name,
+        version=1,
+        description=description,
+        tree_type="GeometryNodeTree",
+        inputs=inputs,
+        outputs=outputs,
+        nodes={},
+        links=(),
+    )
+
+
+HEIGHT_INTERFACE = _interface(
+    "Water Wake Height",
+    "Kriebel and Seelig's highest wave a hull length across, over the Kelvin "
     "pattern's own height there: the pattern's scale",
-    tree_type="GeometryNodeTree",
-    inputs=(
+    (
         Socket("Fr²", "NodeSocketFloat", 0.25, tooltip="U² / (g L): the hull's Froude number, squared"),
         Socket("Draft", "NodeSocketFloat", 0.5, tooltip="How deep the hull sits (as Depth)"),
         Socket("Depth", "NodeSocketFloat", DEPTH_DEFAULT, tooltip="The water's depth (as Draft)"),
         Socket("Length", "NodeSocketFloat", 1.0, tooltip="The hull's length, in the height's units"),
         Socket("Strength", "NodeSocketFloat", 1.0, tooltip="Kriebel and Seelig's β"),
     ),
-    outputs=(Socket("Height", "NodeSocketFloat", tooltip="The pattern's scale"),),
-    nodes={},
-    links=(),
+    (Socket("Height", "NodeSocketFloat", tooltip="The pattern's scale"),),
 )
 HEIGHT_CROSSINGS = (
     {
@@ -1069,26 +1079,22 @@ RING_KEYS = (
     *("ring_spread_s", "ring_fade_s", "ring_fade_n", "ring_fade", "ring_size"),
     *("ring_a1", "ring_a2", "ring_a3", "ring_a4", "ring_a5"),
 )
-RING_INTERFACE = GroupSpec(
-    name="Water Wake Ring",
-    version=1,
-    description="The ring of waves an object leaves where it drops in: waves twice its beam long "
+RING_INTERFACE = _interface(
+    "Water Wake Ring",
+    "The ring of waves an object leaves where it drops in: waves twice its beam long "
     "round a front running out at their group speed, spreading and fading",
-    tree_type="GeometryNodeTree",
-    inputs=(
+    (
         Socket("R", "NodeSocketFloat", 0.0, tooltip="Distance from where it dropped in"),
         Socket("Age", "NodeSocketFloat", 0.0, tooltip="Seconds since"),
         Socket("Beam", "NodeSocketFloat", 1.0, tooltip="Its width: the waves are twice as long"),
         Socket("G", "NodeSocketFloat", G, tooltip="g, in the water's units"),
         Socket("Strength", "NodeSocketFloat", 1.0, tooltip="x the height"),
     ),
-    outputs=(
+    (
         Socket("Height", "NodeSocketFloat", tooltip="The ring's height here"),
         Socket("Wavelength", "NodeSocketFloat", tooltip="Its waves' length, λ = 2 x Beam"),
         Socket("Group Speed", "NodeSocketFloat", tooltip="dω/dk, ω² = g k + (σ/ρ) k³"),
     ),
-    nodes={},
-    links=(),
 )
 RING_CROSSINGS = (
     {
@@ -1105,17 +1111,15 @@ RING_SPAWN_KEYS = (
     *("src_split", "was_above", "now_below", "crossed", "entered", "ring_point", "store_ring"),
     *("rings_join", "ring_time_old", "ring_age_old", "ring_gone", "rings_drop"),
 )
-TRACK_INTERFACE = GroupSpec(
-    name="Water Wake Track",
-    version=1,
-    description="Where an object has been: a point a step (its time, speed, distance come and "
+TRACK_INTERFACE = _interface(
+    "Water Wake Track",
+    "Where an object has been: a point a step (its time, speed, distance come and "
     "heading), those older than Keep dropped; and a ring point where it dropped into the water",
-    tree_type="GeometryNodeTree",
-    inputs=(
+    (
         Socket("Source", "NodeSocketObject", tooltip="The object followed"),
         Socket("Keep", "NodeSocketFloat", 30.0, tooltip="Seconds of track kept"),
     ),
-    outputs=(
+    (
         Socket(
             "Track",
             "NodeSocketGeometry",
@@ -1127,21 +1131,17 @@ TRACK_INTERFACE = GroupSpec(
         Socket("Last", "NodeSocketVector", tooltip="Where it is, on the plane"),
         Socket("Speed", "NodeSocketFloat", tooltip="Its speed this step"),
     ),
-    nodes={},
-    links=(),
 )
 TRACK_CROSSINGS = (
     {"input:Source": "Source", "input:Keep": "Keep"},
     {f"sim_out:{name}": name for name in ("Track", "Rings", "Arc", "Heading", "Last", "Speed")},
 )
 
-FOAM_INTERFACE = GroupSpec(
-    name="Water Wake Foam",
-    version=1,
-    description="Foam round a moving hull and along its drifted trail, widening and fading with "
+FOAM_INTERFACE = _interface(
+    "Water Wake Foam",
+    "Foam round a moving hull and along its drifted trail, widening and fading with "
     "age, over the foam of wakes before",
-    tree_type="GeometryNodeTree",
-    inputs=(
+    (
         Socket("Position", "NodeSocketVector", tooltip="The water point, on the plane"),
         Socket("Trail", "NodeSocketGeometry", tooltip="The track's points, drifted (wake_time, wake_speed)"),
         Socket("Foot", "NodeSocketInt", 0, tooltip="The trail's point nearest along it"),
@@ -1153,11 +1153,7 @@ FOAM_INTERFACE = GroupSpec(
         Socket("Beam", "NodeSocketFloat", 3.0, tooltip="Its width"),
         Socket("Foam Fade", "NodeSocketFloat", 6.0, tooltip="Seconds over which the foam fades to a third"),
     ),
-    outputs=(
-        Socket("Foam", "NodeSocketFloat", tooltip=f"This wake's foam or, where more, '{FOAM_ATTRIBUTE}'"),
-    ),
-    nodes={},
-    links=(),
+    (Socket("Foam", "NodeSocketFloat", tooltip=f"This wake's foam or, where more, '{FOAM_ATTRIBUTE}'"),),
 )
 FOAM_CROSSINGS = (
     {

@@ -33,19 +33,26 @@ import harness
 G = 9.81
 
 
+def _modifier_tree(name, group):
+    """A modifier's tree with geometry in and out, using `group`: (tree, its input and output
+    nodes, the group's node)."""
+    tree = bpy.data.node_groups.new(name, "GeometryNodeTree")
+    tree.interface.new_socket("Geometry", in_out="INPUT", socket_type="NodeSocketGeometry")
+    tree.interface.new_socket("Geometry", in_out="OUTPUT", socket_type="NodeSocketGeometry")
+    into, out = tree.nodes.new("NodeGroupInput"), tree.nodes.new("NodeGroupOutput")
+    used = tree.nodes.new("GeometryNodeGroup")
+    used.node_tree = group
+    return tree, into, out, used
+
+
 def _evaluate(group, points, constants, axes=("X", "Y"), output=0, absolute=True):
     """The group's float output `output` at `points` (N, 2), their x and y its inputs `axes`
     (y taken as |y| when `absolute`), its other inputs `constants`, through a modifier on a mesh
     of those points (no faces)."""
-    tree = bpy.data.node_groups.new("test: evaluate a field group", "GeometryNodeTree")
-    tree.interface.new_socket("Geometry", in_out="INPUT", socket_type="NodeSocketGeometry")
-    tree.interface.new_socket("Geometry", in_out="OUTPUT", socket_type="NodeSocketGeometry")
+    tree, into, out, field = _modifier_tree("test: evaluate a field group", group)
     nodes = tree.nodes
-    into, out = nodes.new("NodeGroupInput"), nodes.new("NodeGroupOutput")
     position = nodes.new("GeometryNodeInputPosition")
     split = nodes.new("ShaderNodeSeparateXYZ")
-    field = nodes.new("GeometryNodeGroup")
-    field.node_tree = group
     store = nodes.new("GeometryNodeStoreNamedAttribute")
     store.data_type, store.domain = "FLOAT", "POINT"
     store.inputs["Name"].default_value = "test_value"
@@ -213,13 +220,8 @@ def _track_model(frames, keep, to_water):
 def _track_tree(group, output):
     """A modifier tree: the track group's `output` geometry as vertices, with the group's single
     values stored on them (test_arc, test_heading, test_last, test_speed)."""
-    tree = bpy.data.node_groups.new("test: a track", "GeometryNodeTree")
-    tree.interface.new_socket("Geometry", in_out="INPUT", socket_type="NodeSocketGeometry")
-    tree.interface.new_socket("Geometry", in_out="OUTPUT", socket_type="NodeSocketGeometry")
+    tree, _into, out, track = _modifier_tree("test: a track", group)
     nodes, links = tree.nodes, tree.links
-    out = nodes.new("NodeGroupOutput")
-    track = nodes.new("GeometryNodeGroup")
-    track.node_tree = group
     vertices = nodes.new("GeometryNodePointsToVertices")
     links.new(track.outputs[output], vertices.inputs["Points"])
     geometry = vertices.outputs["Mesh"]
@@ -365,11 +367,8 @@ def test_the_foam_group_lies_round_the_hull_and_along_the_trails_line_as_numpy_s
         points,
         {"test_foot": ("INT", foot.astype(np.int32)), wake.FOAM_ATTRIBUTE: ("FLOAT", before)},
     )
-    tree = bpy.data.node_groups.new("test: foam", "GeometryNodeTree")
-    tree.interface.new_socket("Geometry", in_out="INPUT", socket_type="NodeSocketGeometry")
-    tree.interface.new_socket("Geometry", in_out="OUTPUT", socket_type="NodeSocketGeometry")
+    tree, into, out, foam = _modifier_tree("test: foam", group)
     nodes, links = tree.nodes, tree.links
-    into, out = nodes.new("NodeGroupInput"), nodes.new("NodeGroupOutput")
     info = nodes.new("GeometryNodeObjectInfo")
     info.inputs["Object"].default_value = trail_object
     to_points = nodes.new("GeometryNodeMeshToPoints")
@@ -377,8 +376,6 @@ def test_the_foam_group_lies_round_the_hull_and_along_the_trails_line_as_numpy_s
     foot_read.data_type = "INT"
     foot_read.inputs["Name"].default_value = "test_foot"
     position = nodes.new("GeometryNodeInputPosition")
-    foam = nodes.new("GeometryNodeGroup")
-    foam.node_tree = group
     store = nodes.new("GeometryNodeStoreNamedAttribute")
     store.data_type, store.domain = "FLOAT", "POINT"
     store.inputs["Name"].default_value = "test_foam"
