@@ -725,8 +725,6 @@ def _kelvin_nodes():
         # Only the points near the track are computed (a field is evaluated only where its
         # node's selection holds): the box round the zone (`_zone_nodes`) and the rings' box,
         # wider by how far a ring runs out in its 12 s. Two compares a point.
-        "kept": Node("GeometryNodeJoinGeometry", 40, label="track and its drift"),
-        "spread_far": math("MULTIPLY_ADD", 41, "trail's spread: 0.2 m/s x Foam Fade + 2 m", b=0.2, c=2.0),
         "ring_box": Node("GeometryNodeBoundBox", 41, label="the rings' box"),
         "ring_reach": math("MULTIPLY_ADD", 41, "a ring's reach: group speed x 12 s + 2 λ", b=12.0),
         "ring_twice": math("MULTIPLY", 40, "2 λ", b=2.0),
@@ -734,13 +732,6 @@ def _kelvin_nodes():
         "ring_margin": math("ADD", 43, "ring margin"),
         "ring_low": vmath("SUBTRACT", 44, "rings' low corner"),
         "ring_high": vmath("ADD", 44, "rings' high corner"),
-        "all_low": vmath("MINIMUM", 45, "both boxes: low"),
-        "all_high": vmath("MAXIMUM", 45, "both boxes: high"),
-        "low_split": Node("ShaderNodeSeparateXYZ", 46, label="low"),
-        "high_split": Node("ShaderNodeSeparateXYZ", 46, label="high"),
-        "low_xy": Node("ShaderNodeCombineXYZ", 47, values={"Z": -1e9}, label="low, any height"),
-        "high_xy": Node("ShaderNodeCombineXYZ", 47, values={"Z": 1e9}, label="high, any height"),
-        **_box_test(("above_low", "below_high", "near_track"), 48, "the box"),
         "set": Node("GeometryNodeSetPosition", 49, label="the wake"),
     }
     links = [
@@ -778,9 +769,6 @@ def _kelvin_nodes():
         ("total:Value", "lift:Z"),
         ("store_zone:Geometry", "set:Geometry"),
         ("lift:Vector", "set:Offset"),
-        ("sim_out:Track", "kept:Geometry"),
-        ("drifted:Geometry", "kept:Geometry"),
-        ("input:Foam Fade", "spread_far:#0"),
         ("sim_out:Rings", "ring_box:Geometry"),
         ("ring_lambda:Value", "ring_twice:#0"),
         ("ring_cg:Value", "ring_reach:#0"),
@@ -792,22 +780,6 @@ def _kelvin_nodes():
         ("ring_margin:Value", "ring_low:#1"),
         ("ring_box:Max", "ring_high:#0"),
         ("ring_margin:Value", "ring_high:#1"),
-        ("tz_low:Vector", "all_low:#0"),
-        ("ring_low:Vector", "all_low:#1"),
-        ("tz_high:Vector", "all_high:#0"),
-        ("ring_high:Vector", "all_high:#1"),
-        ("all_low:Vector", "low_split:Vector"),
-        ("all_high:Vector", "high_split:Vector"),
-        ("low_split:X", "low_xy:X"),
-        ("low_split:Y", "low_xy:Y"),
-        ("high_split:X", "high_xy:X"),
-        ("high_split:Y", "high_xy:Y"),
-        ("position:Position", "above_low:A"),
-        ("low_xy:Vector", "above_low:B"),
-        ("position:Position", "below_high:A"),
-        ("high_xy:Vector", "below_high:B"),
-        ("above_low:Result", "near_track:#0"),
-        ("below_high:Result", "near_track:#1"),
         ("in_wake:Value", "set:Selection"),
     ]
     return nodes, tuple(links)
@@ -1172,6 +1144,54 @@ FOAM_CROSSINGS = (
 )
 FOAM_OUTSIDE = ("t_age", "drift", "drift_flat", "drifted", "store_foam")  # the drift feeds the walk too
 
+ZONE_INTERFACE = _interface(
+    "Water Wake Zone",
+    "Where a wake can show: the Kelvin wedge round the track (its chord, how far it strays, "
+    "how much longer it is), the rings' box and the foam's band, stored as wake_zone (0 none, "
+    "1 waves, 2 waves and foam) on the points in the box round them, the others left as they are",
+    (
+        Socket("Geometry", "NodeSocketGeometry", tooltip="The water"),
+        Socket("Track", "NodeSocketGeometry", tooltip="The track's points (wake_time)"),
+        Socket("Trail", "NodeSocketGeometry", tooltip="The track's points, drifted"),
+        Socket("Rings Low", "NodeSocketVector", tooltip="The rings' box: low corner"),
+        Socket("Rings High", "NodeSocketVector", tooltip="The rings' box: high corner"),
+        Socket("Last", "NodeSocketVector", tooltip="Where the object is, on the plane"),
+        Socket("Time", "NodeSocketFloat", 0.0, tooltip="Seconds now"),
+        Socket("Track Length", "NodeSocketFloat", 0.0, tooltip="The track's length along it"),
+        Socket("Length", "NodeSocketFloat", 10.0, tooltip="The hull's length"),
+        Socket("Beam", "NodeSocketFloat", 3.0, tooltip="Its width"),
+        Socket("Foam Fade", "NodeSocketFloat", 6.0, tooltip="Seconds over which the foam fades to a third"),
+    ),
+    (
+        Socket("Geometry", "NodeSocketGeometry", tooltip="The water, wake_zone stored in the box"),
+        Socket("Newer", "NodeSocketFloat", tooltip="+1 when the track's newest point is its last, else -1"),
+        Socket("Low", "NodeSocketVector", tooltip="The box round the zone's wedge: low corner"),
+        Socket("High", "NodeSocketVector", tooltip="Its high corner"),
+    ),
+)
+ZONE_CROSSINGS = (
+    {
+        "input:Geometry": "Geometry",
+        "sim_out:Track": "Track",
+        "drifted:Geometry": "Trail",
+        "ring_low:Vector": "Rings Low",
+        "ring_high:Vector": "Rings High",
+        "sim_out:Last": "Last",
+        "clock:Seconds": "Time",
+        "track_length:Value": "Track Length",
+        "length_u:Value": "Length",
+        "beam_u:Value": "Beam",
+        "input:Foam Fade": "Foam Fade",
+    },
+    {
+        "store_zone:Geometry": "Geometry",
+        "ord_dir:Value": "Newer",
+        "tz_low:Vector": "Low",
+        "tz_high:Vector": "High",
+    },
+)
+ZONE_READERS = ("zone_read", "in_wake", "in_foam", "drop_zone")  # the zone's readers stay outside it
+
 
 def _clamped_sample(data_type, column, label):
     """A Sample Index that reads the first or last point past either end (a track's ends)."""
@@ -1387,6 +1407,12 @@ def _zone_nodes():
     (1); near the trail too (2). It is stored once (`wake_zone`), read by the height and the foam,
     and removed: the nearest-point searches, the costly part, run only inside it."""
     nodes = {
+        "z_position": Node("GeometryNodeInputPosition", 38),
+        "z_p_flat": vmath("MULTIPLY", 39, "on the plane", b=(1.0, 1.0, 0.0)),
+        "z_t_position": Node("GeometryNodeInputPosition", 39, label="track position"),
+        "z_t_time": _named("wake_time", "FLOAT", 39),
+        "kept": Node("GeometryNodeJoinGeometry", 40, label="track and its drift"),
+        "spread_far": math("MULTIPLY_ADD", 41, "trail's spread: 0.2 m/s x Foam Fade + 2 m", b=0.2, c=2.0),
         "t_count": Node("GeometryNodeAttributeDomainSize", 40, {"component": "POINTCLOUD"}, label="points"),
         "last_index": math("SUBTRACT", 41, "the last point's index", b=1.0),
         # Which end is the newest: Join Geometry's order is not the links' order, so asked of
@@ -1479,6 +1505,13 @@ def _zone_nodes():
         "z_band": math("LESS_THAN", 54, "near the trail"),
         "z_foam": math("MULTIPLY", 57, "foam here: 1 more"),
         "zone": math("ADD", 58, "zone: 0, 1 or 2"),
+        "all_low": vmath("MINIMUM", 57, "both boxes: low"),
+        "all_high": vmath("MAXIMUM", 57, "both boxes: high"),
+        "low_split": Node("ShaderNodeSeparateXYZ", 57, label="low"),
+        "high_split": Node("ShaderNodeSeparateXYZ", 57, label="high"),
+        "low_xy": Node("ShaderNodeCombineXYZ", 58, values={"Z": -1e9}, label="low, any height"),
+        "high_xy": Node("ShaderNodeCombineXYZ", 58, values={"Z": 1e9}, label="high, any height"),
+        **_box_test(("above_low", "below_high", "near_track"), 58, "the box"),
         "store_zone": _store("wake_zone", "FLOAT", 59),
         "zone_read": _named("wake_zone", "FLOAT", 59, "the zone"),
         "in_wake": math("GREATER_THAN", 60, "waves here", b=0.5),
@@ -1489,11 +1522,11 @@ def _zone_nodes():
         ("sim_out:Track", "t_count:Geometry"),
         ("t_count:Point Count", "last_index:#0"),
         ("sim_out:Track", "oldest:Geometry"),
-        ("t_position:Position", "oldest:Value"),
+        ("z_t_position:Position", "oldest:Value"),
         ("sim_out:Track", "ord_first_t:Geometry"),
-        ("t_time:Attribute", "ord_first_t:Value"),
+        ("z_t_time:Attribute", "ord_first_t:Value"),
         ("sim_out:Track", "ord_last_t:Geometry"),
-        ("t_time:Attribute", "ord_last_t:Value"),
+        ("z_t_time:Attribute", "ord_last_t:Value"),
         ("last_index:Value", "ord_last_t:Index"),
         ("ord_last_t:Value", "ord_up:#0"),
         ("ord_first_t:Value", "ord_up:#1"),
@@ -1507,7 +1540,7 @@ def _zone_nodes():
         ("sim_out:Last", "chord:#1"),
         ("chord:Vector", "chord_len:#0"),
         ("chord:Vector", "chord_dir:#0"),
-        ("t_position:Position", "k_v:#0"),
+        ("z_t_position:Position", "k_v:#0"),
         ("sim_out:Last", "k_v:#1"),
         ("k_v:Vector", "k_s:#0"),
         ("chord_dir:Vector", "k_s:#1"),
@@ -1538,7 +1571,7 @@ def _zone_nodes():
         ("input:Beam", "foam_b:#0"),
         ("foam_b:Value", "foam_mb:#1"),
         ("sim_out:Track", "fb_oldest_t:Geometry"),
-        ("t_time:Attribute", "fb_oldest_t:Value"),
+        ("z_t_time:Attribute", "fb_oldest_t:Value"),
         ("ord_oldest:Value", "fb_oldest_t:Index"),
         ("clock:Seconds", "fb_duration:#0"),
         ("fb_oldest_t:Value", "fb_duration:#1"),
@@ -1556,7 +1589,7 @@ def _zone_nodes():
         ("z_young:Value", "z_band_young:#1"),
         ("foam_mb:Value", "foam_w:#0"),
         ("dev:Max", "foam_w:#1"),
-        ("p_flat:Vector", "z_v:#0"),
+        ("z_p_flat:Vector", "z_v:#0"),
         ("sim_out:Last", "z_v:#1"),
         ("z_v:Vector", "z_s:#0"),
         ("chord_dir:Vector", "z_s:#1"),
@@ -1623,9 +1656,9 @@ def _zone_nodes():
         ("z_after:Value", "z_k1:#1"),
         ("z_k1:Value", "z_kelvin:#0"),
         ("z_before:Value", "z_kelvin:#1"),
-        ("p_flat:Vector", "r_above:A"),
+        ("z_p_flat:Vector", "r_above:A"),
         ("ring_low:Vector", "r_above:B"),
-        ("p_flat:Vector", "r_below:A"),
+        ("z_p_flat:Vector", "r_below:A"),
         ("ring_high:Vector", "r_below:B"),
         ("r_above:Result", "r_in:#0"),
         ("r_below:Result", "r_in:#1"),
@@ -1637,6 +1670,26 @@ def _zone_nodes():
         ("z_kelvin:Value", "z_foam:#1"),
         ("z_waves:Value", "zone:#0"),
         ("z_foam:Value", "zone:#1"),
+        ("sim_out:Track", "kept:Geometry"),
+        ("drifted:Geometry", "kept:Geometry"),
+        ("input:Foam Fade", "spread_far:#0"),
+        ("z_position:Position", "z_p_flat:#0"),
+        ("tz_low:Vector", "all_low:#0"),
+        ("ring_low:Vector", "all_low:#1"),
+        ("tz_high:Vector", "all_high:#0"),
+        ("ring_high:Vector", "all_high:#1"),
+        ("all_low:Vector", "low_split:Vector"),
+        ("all_high:Vector", "high_split:Vector"),
+        ("low_split:X", "low_xy:X"),
+        ("low_split:Y", "low_xy:Y"),
+        ("high_split:X", "high_xy:X"),
+        ("high_split:Y", "high_xy:Y"),
+        ("z_position:Position", "above_low:A"),
+        ("low_xy:Vector", "above_low:B"),
+        ("z_position:Position", "below_high:A"),
+        ("high_xy:Vector", "below_high:B"),
+        ("above_low:Result", "near_track:#0"),
+        ("below_high:Result", "near_track:#1"),
         ("input:Geometry", "store_zone:Geometry"),
         ("near_track:Boolean", "store_zone:Selection"),
         ("zone:Value", "store_zone:Value"),
@@ -1730,14 +1783,16 @@ def _spec():
     nodes, links, ring = nest(nodes, links, RING_KEYS, RING_INTERFACE, ("ring_group", 30), *RING_CROSSINGS)
     foam_keys = [key for key in _foam_nodes()[0] if key not in FOAM_OUTSIDE]
     nodes, links, foam = nest(nodes, links, foam_keys, FOAM_INTERFACE, ("foam_group", 32), *FOAM_CROSSINGS)
+    zone_keys = [key for key in _zone_nodes()[0] if key not in ZONE_READERS]
+    nodes, links, zone = nest(nodes, links, zone_keys, ZONE_INTERFACE, ("zone_group", 40), *ZONE_CROSSINGS)
     track_keys = (*(key for key in _track_nodes()[0] if key != "clock"), *RING_SPAWN_KEYS)
     nodes, links, track = nest(
         nodes, links, track_keys, TRACK_INTERFACE, ("track_group", 6), *TRACK_CROSSINGS
     )
     return GroupSpec(
         name=NAME,
-        version=10,
-        includes=(KELVIN_SPEC, height, ring, foam, track),
+        version=11,
+        includes=(KELVIN_SPEC, height, ring, foam, zone, track),
         description="The Kelvin wake, rings and foam of one moving object (its track kept by a "
         "simulation zone)",
         tree_type="GeometryNodeTree",
@@ -1831,4 +1886,4 @@ def _spec():
 
 
 SPEC = _spec()
-HEIGHT_SPEC, RING_SPEC, FOAM_SPEC, TRACK_SPEC = SPEC.includes[1:]
+HEIGHT_SPEC, RING_SPEC, FOAM_SPEC, ZONE_SPEC, TRACK_SPEC = SPEC.includes[1:]

@@ -19,6 +19,9 @@
   its ring where and when it went in.
 * `Water Wake Foam`: round a hull heading 30° and along a curving trail of points 4 m apart,
   over foam already there, numpy's foam over the whole patch, unbroken along the trail's line.
+* `Water Wake Zone`: round a hull running straight or turning 90°, every point its waves can
+  have reached by the group velocity (numpy's discs, not the group's wedge), numpy's foam and
+  the rings' box are in it, in a bounded area.
 """
 
 import math
@@ -415,3 +418,126 @@ def test_the_foam_group_lies_round_the_hull_and_along_the_trails_line_as_numpy_s
     assert worst < 1e-4
     assert on_line.sum() > 20 and kept > 0.95  # unbroken between points 4 m apart
     assert theirs.max() > 0.55 and (theirs > before + 0.05).mean() > 0.02  # the foam is there to see
+
+
+def _energy_discs(track, times, now, length):
+    """Where a moving object's waves can be, after the group velocity (numpy, not the group's
+    wedge): what it made at a track point τ seconds ago, moving at U along its heading h there,
+    has spread (each wave at θ to h running at half its phase speed U cos θ) over the disc of
+    diameter U τ / 2 from that point forward along h, round a hull L long. Returns (centres,
+    radii)."""
+    step = np.diff(track, axis=0)
+    duration = np.diff(times)
+    speed = np.linalg.norm(step, axis=1) / np.abs(duration)
+    heading = step / np.linalg.norm(step, axis=1)[:, None] * np.sign(duration)[:, None]
+    age = now - times[1:]
+    radius = speed * age / 4.0
+    return track[1:] + heading * radius[:, None], radius + length / 2
+
+
+def _zone_tree(group, track, times, trail, now, rings, length, beam, fade):
+    """A modifier tree storing the zone group's zone on its water and its box corners and Newer
+    as attributes (the track and the trail read from mesh objects)."""
+    track_object = _mesh_object("test track", track, {"wake_time": ("FLOAT", times)})
+    trail_object = _mesh_object("test trail", trail, {"wake_time": ("FLOAT", times)})
+    tree, into, out, zone = _modifier_tree("test: zone", group)
+    nodes, links = tree.nodes, tree.links
+    for name, obj in (("Track", track_object), ("Trail", trail_object)):
+        info = nodes.new("GeometryNodeObjectInfo")
+        info.inputs["Object"].default_value = obj
+        to_points = nodes.new("GeometryNodeMeshToPoints")
+        links.new(info.outputs["Geometry"], to_points.inputs["Mesh"])
+        links.new(to_points.outputs["Points"], zone.inputs[name])
+    newest = track[np.argmax(times)]
+    arc = np.linalg.norm(np.diff(track[np.argsort(times)], axis=0), axis=1).sum()
+    for name, value in (
+        ("Rings Low", (*rings[0], -1.0)),  # a box round points on the plane, as the group's are
+        ("Rings High", (*rings[1], 1.0)),
+        ("Last", (*newest, 0.0)),
+        ("Time", now),
+        ("Track Length", arc),
+        ("Length", length),
+        ("Beam", beam),
+        ("Foam Fade", fade),
+    ):
+        zone.inputs[name].default_value = value
+    links.new(into.outputs[0], zone.inputs["Geometry"])
+    geometry = zone.outputs["Geometry"]
+    for name, data_type in (("Newer", "FLOAT"), ("Low", "FLOAT_VECTOR"), ("High", "FLOAT_VECTOR")):
+        store = nodes.new("GeometryNodeStoreNamedAttribute")
+        store.data_type, store.domain = data_type, "POINT"
+        store.inputs["Name"].default_value = f"test_{name.lower()}"
+        links.new(geometry, store.inputs["Geometry"])
+        links.new(zone.outputs[name], store.inputs["Value"])
+        geometry = store.outputs["Geometry"]
+    links.new(geometry, out.inputs[0])
+    return tree, (track_object, trail_object)
+
+
+@pytest.mark.parametrize(("turn", "newest_first"), ((90.0, False), (90.0, True), (0.0, False)))
+def test_the_zone_group_holds_every_wave_and_the_foam_and_little_else(addon, turn, newest_first):
+    """A 6 m hull at 4 m/s running straight or turning 90° over 30 s, its trail drifting 0.3 m/s
+    across, a ring's box beside it: over the whole 180 x 180 m water, the zone holds every point
+    the hull's waves can have reached by the group velocity (numpy's discs, `_energy_discs`) and
+    the rings' box, and marks foam (2) wherever numpy's trail foam is above 1% (on the straight
+    track nowhere well ahead of the bow); its area is at most 2.6 times the discs' (4 round the
+    turn); Low and High bound it; Newer says which end of the track is newest, whichever order
+    its points come in."""
+    harness.clean_scene(width=8, height=8, samples=1)
+    wake = harness.addon("nodes.wake")
+    group = harness.addon("nodes.builder").ensure_group(wake.ZONE_SPEC, {})
+    assert group.is_modifier  # geometry in and out
+    now, length, beam, fade = 30.0, 6.0, 2.4, 6.0
+    times = np.arange(31.0)  # a point a second, 4 m apart
+    if turn:
+        radius, turned = 120.0 / math.radians(turn), times / 30.0 * math.radians(turn)
+        track = np.stack([radius * np.sin(turned), radius * (1.0 - np.cos(turned))], axis=1) - (40.0, 30.0)
+    else:
+        track = np.stack([4.0 * times - 60.0, 0.5 * times - 10.0], axis=1)
+    trail = track + np.array([0.3, -0.3])[None] * (now - times)[:, None]
+    order = np.argsort(-times if newest_first else times)
+    track, times, trail = track[order], times[order], trail[order]
+    rings = (np.array([40.0, -70.0]), np.array([55.0, -55.0]))
+    x, y = np.meshgrid(np.linspace(-90.0, 90.0, 181), np.linspace(-90.0, 90.0, 181))
+    points = np.stack([x.ravel(), y.ravel()], axis=1)
+    water = _mesh_object("test water", points, {})
+    tree, made = _zone_tree(group, track, times, trail, now, rings, length, beam, fade)
+    water.modifiers.new("zone", "NODES").node_group = tree
+    evaluated = water.evaluated_get(bpy.context.evaluated_depsgraph_get()).data
+    zone = _read(evaluated, "wake_zone", 1)
+    newer = _read(evaluated, "test_newer", 1)[0]
+    low, high = _read(evaluated, "test_low", 3)[0, :2], _read(evaluated, "test_high", 3)[0, :2]
+
+    ordered = np.argsort(times)
+    centres, reach = _energy_discs(track[ordered], times[ordered], now, length)
+    waves = (np.linalg.norm(points[:, None] - centres[None], axis=2) < reach[None]).any(axis=1)
+    in_rings = np.all((points > rings[0]) & (points < rings[1]), axis=1)
+    foot = np.argmin(np.linalg.norm(points[:, None] - trail[None], axis=2), axis=1)
+    speeds = np.full(len(times), 4.0)
+    heading = track[ordered][-1] - track[ordered][-2]
+    heading /= np.linalg.norm(heading)
+    foam, _ = _foam_model(
+        points, trail, times, speeds, foot, now, track[ordered][-1], heading, 0.0, length, beam, fade, 0.0
+    )
+    ahead = (points - track[ordered][-1]) @ heading > 2.5 * length  # well ahead of the bow
+    cell = (x[0, 1] - x[0, 0]) ** 2
+    print(
+        f"zone ({'newest first' if newest_first else 'newest last'}): {(zone > 0.5).sum() * cell:.0f} m²",
+        f"of waves where the discs are {waves.sum() * cell:.0f} m²; foam {(zone > 1.5).sum() * cell:.0f}",
+        f"m² where numpy's is above 1% on {(foam > 0.01).sum() * cell:.0f} m²; missed: waves",
+        f"{(waves & (zone < 0.5)).sum()}, rings {(in_rings & (zone < 0.5)).sum()}, foam",
+        f"{((foam > 0.01) & (zone < 1.5)).sum()} points",
+    )
+    assert not (waves & (zone < 0.5)).any()
+    assert not (in_rings & (zone < 0.5)).any()
+    assert not ((foam > 0.01) & (zone < 1.5)).any()
+    if not turn:  # on a bent track the zone's wedge is round its chord, so reaches past the bow
+        assert not (ahead & (zone > 1.5)).any()
+    # Its margins (the beam, the trail's spread, 2 m, the drift's stray from the chord) and the
+    # chord's wedge round a bend: measured 2.42 straight, 3.63 round the 90° turn.
+    assert (zone > 0.5).sum() < (4.0 if turn else 2.6) * (waves | in_rings).sum()
+    inside = points[zone > 0.5]
+    assert np.all(inside > low - 1e-3) and np.all(inside < high + 1e-3)
+    assert newer == (-1.0 if newest_first else 1.0)
+    for obj in (water, *made):
+        bpy.data.objects.remove(obj)
