@@ -182,8 +182,46 @@ def test_on_the_wind_sea_it_pitches_as_its_footprint_and_is_driven_without_pytho
 
 
 @pytest.mark.lts  # actions with slots from 4.4, without before
+def _yaw(matrix):
+    """The heading of an object's X axis on the plane, radians."""
+    x_axis = matrix.to_3x3() @ Vector((1.0, 0.0, 0.0))
+    return math.atan2(x_axis.y, x_axis.x)
+
+
+def _probes_axis(probes, depsgraph):
+    """(centre (x, y), the heading of the probes' long axis on the plane, radians, modulo pi):
+    the principal axis of their world positions, as laid over the footprint's length."""
+    xy = np.array([p.evaluated_get(depsgraph).matrix_world.translation[:2] for p in probes])
+    centre = xy.mean(axis=0)
+    _u, _s, rows = np.linalg.svd(xy - centre)
+    return centre, math.atan2(rows[0][1], rows[0][0])
+
+
+def _turn_apart(a, b, period=2.0 * math.pi):
+    """How far apart two headings are, degrees, over `period` (pi for an axis)."""
+    return math.degrees(abs((a - b + period / 2.0) % period - period / 2.0))
+
+
+def _follows(hull, probes, depsgraph, want_xy, want_yaw, label):
+    """The floating hull's heading is the one it has without floating, and its probes lie along
+    it round its origin: a rig that never turned (or turned the other way) fails here."""
+    matrix = hull.evaluated_get(depsgraph).matrix_world
+    centre, axis = _probes_axis(probes, depsgraph)
+    yaw_off = _turn_apart(_yaw(matrix), want_yaw)
+    axis_off = _turn_apart(axis, want_yaw, math.pi)
+    print(
+        f"{label}: at {matrix.translation.x:.2f}, {matrix.translation.y:.2f}, heading "
+        f"{math.degrees(_yaw(matrix)):.1f}° (unfloated {math.degrees(want_yaw):.1f}°); probes' "
+        f"centre {centre[0]:.2f}, {centre[1]:.2f}, their axis {axis_off:.2f}° off it"
+    )
+    assert (Vector(centre) - matrix.translation.xy).length < 0.05
+    assert (matrix.translation.xy - Vector(want_xy)).length < 0.05
+    assert yaw_off < 0.5 and axis_off < 0.5
+
+
 def test_it_follows_the_hull_moving_and_turning_by_keys_added_after_it_floated(scene):
-    """The hull floated still, then keyed moving along a diagonal and turning: the rig follows."""
+    """The hull floated still, then keyed moving along a diagonal and turning 0.8 rad: the rig
+    follows, its heading and its probes' line turning with the keys."""
     sea = _sea(scene, period=8.0)
     hull = _hull(scene)
     _api().float_on_water(hull, sea, draft=DRAFT)
@@ -193,19 +231,13 @@ def test_it_follows_the_hull_moving_and_turning_by_keys_added_after_it_floated(s
     hull.rotation_euler = (0.0, 0.0, YAW + 0.8)
     hull.keyframe_insert("location", frame=97)
     hull.keyframe_insert("rotation_euler", frame=97)
-    for frame in (1, 49, 97):
+    probes = [o for o in bpy.data.objects if o.get("water_surface_float_rig") == "probe"]
+    # Two keys with auto-clamped handles: halfway in time is halfway in value.
+    for frame, share in ((1, 0.0), (49, 0.5), (97, 1.0)):
         scene.frame_set(frame)
         depsgraph = bpy.context.evaluated_depsgraph_get()
-        matrix = hull.evaluated_get(depsgraph).matrix_world
-        probes = [o for o in bpy.data.objects if o.get("water_surface_float_rig") == "probe"]
-        centre = sum((p.evaluated_get(depsgraph).matrix_world.translation for p in probes), Vector()) / len(
-            probes
-        )
-        print(
-            f"frame {frame}: hull at {tuple(round(c, 2) for c in matrix.translation[:2])}, "
-            f"probes' centre {tuple(round(c, 2) for c in centre[:2])}"
-        )
-        assert (centre.xy - matrix.translation.xy).length < 0.05
+        want = (14.0 + 26.0 * share, -9.0 + 25.0 * share)
+        _follows(hull, probes, depsgraph, want, YAW + 0.8 * share, f"frame {frame}")
     assert harness.addon("water.floating").rig_out_of_date(hull) is None
 
 
@@ -309,51 +341,58 @@ def test_the_operator_takes_draft_and_footprint_and_the_panel_offers_float_again
 
 
 def test_it_follows_a_hull_carried_by_a_parent_or_a_follow_path(scene):
-    """A hull parented to a moving empty, and one led along a curve by a Follow Path constraint:
-    the rig's probes stay under each as it goes."""
+    """A hull parented to an empty that moves and turns, and one led round a corner by a Follow
+    Path constraint that turns it along the curve: each floats where, and heading as, a twin
+    that does not float goes, its probes lying along it."""
     sea = _sea(scene, period=8.0)
     carrier = bpy.data.objects.new("Carrier", None)
     scene.collection.objects.link(carrier)
-    carrier.location = (0.0, 0.0, 0.0)
     carrier.keyframe_insert("location", frame=1)
-    carrier.location = (30.0, 20.0, 0.0)
+    carrier.keyframe_insert("rotation_euler", frame=1)
+    carrier.location, carrier.rotation_euler = (30.0, 20.0, 0.0), (0.0, 0.0, 0.9)
     carrier.keyframe_insert("location", frame=49)
+    carrier.keyframe_insert("rotation_euler", frame=49)
     carried = _hull(scene, location=(5.0, -4.0, 6.0))
     carried.parent = carrier
     curve = bpy.data.curves.new("Course", "CURVE")
     curve.dimensions = "3D"
     spline = curve.splines.new("POLY")
-    spline.points.add(1)
-    spline.points[0].co = (-40.0, -30.0, 6.0, 1.0)
-    spline.points[1].co = (-10.0, 10.0, 6.0, 1.0)
+    spline.points.add(2)
+    for point, co in zip(spline.points, ((-40.0, -30.0), (-10.0, -30.0), (-10.0, 0.0))):
+        point.co = (*co, 6.0, 1.0)
     course = bpy.data.objects.new("Course", curve)
     scene.collection.objects.link(course)
     led = _hull(scene, location=(0.0, 0.0, 0.0))
     path = led.constraints.new("FOLLOW_PATH")
     path.target = course
     path.use_fixed_location = True
+    path.use_curve_follow = True
+    path.forward_axis = "FORWARD_X"
     path.offset_factor = 0.2
     path.keyframe_insert("offset_factor", frame=1)
     path.offset_factor = 0.8
     path.keyframe_insert("offset_factor", frame=49)
+    twins = {}
+    for hull in (carried, led):
+        twin = hull.copy()  # the same parent, transform and constraints; it never floats
+        twin.name = f"{hull.name} unfloated"
+        scene.collection.objects.link(twin)
+        twins[hull] = twin
     for hull in (carried, led):
         _api().float_on_water(hull, sea, draft=DRAFT)
     rig = harness.addon("water.float_rig")
     floating = harness.addon("water.floating")
-    for frame in (1, 25, 49):
+    turned = {}
+    for frame in (1, 20, 49):
         scene.frame_set(frame)
         depsgraph = bpy.context.evaluated_depsgraph_get()
         for hull in (carried, led):
+            twin = twins[hull].evaluated_get(depsgraph).matrix_world
+            turned.setdefault(hull, []).append(_yaw(twin))
             probes = rig.probes_of(floating.pose_of(hull))
-            centre = sum(
-                (p.evaluated_get(depsgraph).matrix_world.translation for p in probes), Vector()
-            ) / len(probes)
-            where = hull.evaluated_get(depsgraph).matrix_world.translation
-            print(
-                f"frame {frame}, {hull.name}: at {where.x:.2f}, {where.y:.2f}; "
-                f"probes {centre.x:.2f}, {centre.y:.2f}"
-            )
-            assert (centre.xy - where.xy).length < 0.05
+            _follows(hull, probes, depsgraph, twin.translation.xy, _yaw(twin), f"frame {frame}, {hull.name}")
+    for hull, yaws in turned.items():  # the twins did turn: the check above saw a turn
+        assert _turn_apart(yaws[0], yaws[-1]) > 40.0, (hull.name, yaws)
 
 
 def _poses(scene, hull, frames):
