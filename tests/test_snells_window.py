@@ -80,3 +80,84 @@ def test_the_sky_shows_through_snells_window_and_the_water_below_outside_it(
     assert inside > 0.85, "the sky fills the window"
     assert inside - outside > 0.3, "outside the window the surface mirrors the dark water below"
     assert edge is not None and abs(edge - CRITICAL) < 2.0
+
+
+def _incidence(scene, water):
+    """(H, W) degrees, NaN where the ray misses the water: each camera pixel's ray meets the
+    evaluated surface (its own faces, waves and all) at this angle to the face's normal. Under
+    the critical angle it leaves the water and the sky shows; over it, it is reflected back down."""
+    import bpy
+    from mathutils import Vector
+
+    origin, directions = harness.pixel_rays(scene, scene.camera)
+    evaluated = water.evaluated_get(bpy.context.evaluated_depsgraph_get())
+    inverse = evaluated.matrix_world.inverted()
+    start = inverse @ Vector(origin)
+    normals_to_world = evaluated.matrix_world.to_3x3().inverted().transposed()
+    angle = np.full(directions.shape[:2], np.nan)
+    for row in range(directions.shape[0]):
+        for column in range(directions.shape[1]):
+            direction = Vector(directions[row, column])
+            hit, _where, normal, _index = evaluated.ray_cast(start, inverse.to_3x3() @ direction)
+            if hit:  # else past the water's edge, near the horizon
+                cos_i = abs(direction.dot((normals_to_world @ normal).normalized()))
+                angle[row, column] = math.degrees(math.acos(min(1.0, cos_i)))
+    return angle
+
+
+@pytest.mark.parametrize("waves", [False, True], ids=["flat", "waves"])
+def test_snells_window_seen_at_an_angle_and_through_waves_is_where_each_ray_refracts_out(
+    addon, render, waves
+):
+    """The camera 3 m down looks up 30° from straight up (the window off the view's centre), under
+    the lake flat and with its four sine waves (0.25 m cells). numpy casts each pixel's ray at
+    the evaluated surface and takes its angle to the face it meets: binned by that angle, the
+    share of pixels showing the sky falls through a half at asin(1 / 1.33), and the pixels well
+    clear of it (4° either side: the shader's own ripples tilt the normal a little more; under 75°)
+    show
+    the sky or the water below as their ray says, one by one. Through waves the window breaks
+    up (rays at one angle from straight up fall both sides of it) and still follows the rays."""
+    scene = harness.clean_scene(engine="CYCLES", width=96, height=96, samples=8)
+    harness.set_world_color(scene, (1.0, 1.0, 1.0))
+    api = harness.addon("api")
+    water = api.add_water(scene, preset="lake", size=80.0, resolution=321, name="Water").object
+    if waves:
+        api.add_waves(water)
+    dark = harness.emission_material("Dark", (0.02, 0.03, 0.04))
+    floor = harness.add_cube(scene, (0.0, 0.0, -12.0), size=1.0, material=dark, name="Floor")
+    floor.scale = (200.0, 200.0, 1.0)
+    tilt = math.radians(30.0)
+    camera = harness.add_camera(scene, (0.3, -0.2, -3.0), (0.3 + math.tan(tilt), -0.2, -2.0), lens=LENS)
+    camera.data.sensor_fit = "HORIZONTAL"
+    scene.frame_set(37)
+    pixels = render(scene, f"below_tilted_{'waves' if waves else 'flat'}")
+    brightness = pixels[..., :3].mean(axis=2)
+    incidence = _incidence(scene, water)
+    met = ~np.isnan(incidence)
+    out = met & (incidence < CRITICAL)
+    inside, outside = brightness[out].mean(), brightness[met & ~out].mean()
+    sky = brightness > (inside + outside) / 2.0
+    # Past 75°, a ray reflected down runs over 100 m before it meets the floor: it may miss it and
+    # see the sky; those are left out.
+    clear = met & (np.abs(incidence - CRITICAL) > 4.0) & (incidence < 75.0)
+    agree = (sky == out)[clear].mean()
+    bins = np.arange(36.0, 62.0)
+    share = np.array([sky[met & (np.abs(incidence - a) < 0.5)].mean() for a in bins])
+    edge = bins[np.argmax(share < 0.5)] - 0.5  # the first bin mostly dark
+    _origin, directions = harness.pixel_rays(scene, camera)
+    from_up = np.degrees(np.arccos(np.clip(directions[..., 2], -1.0, 1.0)))
+    ring = met & (np.abs(from_up - CRITICAL) < 1.0)
+    mixed = out[ring].mean()  # of the rays at the critical angle from straight up, those out
+    print(
+        f"tilted 30°, {'waves' if waves else 'flat'}: sky {inside:.3f}, water below {outside:.3f}; "
+        f"{met.mean():.2f} of the view meets the water, {out[met].mean():.2f} refracts out; pixels 4° "
+        f"clear of the critical angle agreeing with their rays {agree:.3f} ({clear.sum()}); the sky's "
+        f"share falls through a half at {edge:.1f}° to the surface (expected {CRITICAL:.2f}); at "
+        f"{CRITICAL:.1f}° from straight up {mixed:.2f} of the rays refract out"
+    )
+    assert inside > 0.85 and inside - outside > 0.3
+    assert met.mean() > 0.9 and 0.2 < out[met].mean() < 0.8  # both window and water below in view
+    assert clear.sum() > 0.6 * met.sum() and agree > 0.97
+    assert abs(edge - CRITICAL) < 2.0
+    if waves:  # the window's edge broken up: not a circle about straight up
+        assert 0.15 < mixed < 0.85
