@@ -9,7 +9,8 @@ without the keep-out (the water as before, which must show inside, or the test p
 
 Pixels are sorted by rays cast from the camera at the boxes alone: "inside" where the first
 thing a pixel's ray meets is a box's floor (10 cm clear of its walls), "outside" where it meets
-no box (3 pixels clear of any).
+no box (3 pixels clear of any). The band between, at the walls, is judged by its own close-up:
+`test_the_dry_edge_lies_within_two_mask_cells_of_the_wall`, a pixel 1 mm on the water.
 """
 
 import math
@@ -321,3 +322,64 @@ def test_a_deleted_hull_and_a_removed_water_leave_nothing_behind(scene, tmp_path
     assert not [o for o in bpy.data.objects if o.get(harness.addon("water.float_constraints").RIG_KEY)]
     surface = bpy.data.materials["Lake"].node_tree.nodes["Material Output"].inputs["Surface"]
     assert surface.links[0].from_node.name == "Water Surface"
+
+
+@pytest.mark.render
+@pytest.mark.parametrize("engine", ["EEVEE", "CYCLES"])
+def test_the_dry_edge_lies_within_two_mask_cells_of_the_wall(addon, eevee, render, engine):
+    """Straight down at one wall of a still open box turned 0.7 rad, from a camera in the wall's
+    own plane 1 m above the water, a pixel 1 mm on the water (the mask's cells are 2 mm / 1018
+    x 2 m = 1.96 mm): each pixel's ray is taken to the water's plane and into the box's axes,
+    its signed distance from the wall measured. Rendered three ways (kept out, water hidden, no
+    keep-out), every pixel more than two mask cells (and a pixel) inside the wall shows the dry
+    floor and every pixel more than a pixel outside it the water as before: the edge the earlier
+    tests left unjudged (10 cm inside, 3 pixels outside) measured to a few millimetres."""
+    # EEVEE at one sample: its pixels are as sharp there (its cost is per sample, CONTRIBUTING).
+    engine, samples = (eevee, 1) if engine == "EEVEE" else (engine, 4)
+    scene = harness.clean_scene(engine=engine, width=64, height=24, samples=samples)
+    scene.render.filter_size = 0.0  # each pixel its own footprint
+    scene.cycles.filter_width = 0.01
+    harness.set_world_color(scene, (0.35, 0.5, 0.8))
+    sun = bpy.data.objects.new("Sun", bpy.data.lights.new("Sun", "SUN"))
+    sun.data.energy = 3.0
+    sun.rotation_euler = (math.radians(40.0), 0.0, math.radians(-35.0))
+    scene.collection.objects.link(sun)
+    water = _api().add_water(scene, preset="murky_pond", size=20.0, name="Lake").object
+    yaw, size = 0.7, (2.0, 1.2, 1.0)
+    box = open_box(scene, "Boat", size)
+    box.location, box.rotation_euler = (0.3, -0.2, 0.0), (0.0, 0.0, yaw)
+    _api().keep_water_out(box, water)
+    along = Vector((math.cos(yaw), math.sin(yaw), 0.0))  # the box's X: the wall at +1 m faces it
+    on_wall = box.location + along * (size[0] / 2.0)
+    wall_line = Vector((-math.sin(yaw), math.cos(yaw), 0.0))  # the image's rows run along it
+    camera = harness.add_camera(scene, on_wall + Vector((0.0, 0.0, 1.0)), on_wall, lens=562.5)
+    camera.rotation_euler.z = math.atan2(wall_line.y, wall_line.x) - math.pi / 2.0
+    bpy.context.view_layer.update()
+    origin, directions = harness.pixel_rays(scene, camera)
+    hits, _reach = harness.hit_plane_z(origin, directions, 0.0)
+    distance = (hits - np.array(on_wall)) @ np.array(along)  # metres, < 0 inside the box
+    kept = render(scene, f"edge_{engine}_kept")[..., :3]
+    water.hide_render = True
+    hidden = render(scene, f"edge_{engine}_hidden")[..., :3]
+    water.hide_render = False
+    _api().let_water_in(box, water)
+    before = render(scene, f"edge_{engine}_before")[..., :3]
+    contrast = np.abs(before - hidden).mean(axis=2)
+    dry = np.abs(kept - hidden).mean(axis=2) < 0.3 * contrast
+    wet = np.abs(kept - before).mean(axis=2) < 0.3 * contrast
+    cell = 2.0 * size[0] / 1018 / 2.0  # the mask's 1018 cells over the box's 2 m (and its border)
+    pixel = np.abs(np.diff(distance, axis=1)).max()
+    inside = (distance < -(2.0 * cell + pixel)) & (contrast > 0.05)
+    outside = (distance > pixel) & (contrast > 0.05)
+    wet_inside = distance[inside & ~dry]
+    dry_outside = distance[outside & ~wet]
+    driest = distance[dry].max() if dry.any() else None
+    print(
+        f"{engine}: a pixel {pixel * 1000:.2f} mm, a mask cell {cell * 1000:.2f} mm; judged "
+        f"{inside.sum()} inside, {outside.sum()} outside; the dry floor reaches "
+        f"{-driest * 1000 if driest is not None else float('nan'):.1f} mm from the wall; "
+        f"wet inside {len(wet_inside)}, not as before outside {len(dry_outside)}"
+    )
+    assert pixel < 0.0015 and inside.sum() > 200 and outside.sum() > 200
+    assert len(wet_inside) == 0, f"water shows inside, {np.sort(wet_inside)[-5:] * 1000} mm from the wall"
+    assert len(dry_outside) == 0, f"the water outside changed, {np.sort(dry_outside)[:5] * 1000} mm out"
