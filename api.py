@@ -145,9 +145,12 @@ def setup_mirror(water: bpy.types.Object, scene: bpy.types.Scene | None = None) 
 
 
 def add_waves(water: bpy.types.Object) -> bpy.types.NodesModifier:
-    """Adds (or finds) the four-sine `Water Waves` modifier and refits the mirror probe to it."""
-    if not is_water(water):
-        raise MirrorSetupError(f"'{getattr(water, 'name', water)}' is not a water object")
+    """Adds (or finds) the four-sine `Water Waves` modifier and refits the mirror probe to it.
+    MirrorSetupError for an object that is not water, or an open sea (its waves are its Ocean
+    modifier)."""
+    why = _kind.refusal(water, "waves", subject=f"'{getattr(water, 'name', water)}'")
+    if why is not None:
+        raise MirrorSetupError(why)
     modifier = _waves.add_waves(water)
     _mirror.fit_probe(water)
     return modifier

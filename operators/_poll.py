@@ -56,15 +56,31 @@ def water_allowing(cls, context, feature, editable=True):
     return True
 
 
-def any_water(cls, context):
-    """The active object is water (lake or ocean) that may be edited."""
+def any_water(cls, context, feature=None):
+    """The active object is water (any kind, or, given `feature`, one whose kind allows it:
+    `kind.FEATURES`) that may be edited; it may need repair."""
     obj = context.active_object
-    if water_material(obj) is None:
-        return refuse(cls, NOT_WATER)
+    why = kind.refusal(obj, feature) if feature is not None else None
+    if water_material(obj) is None or why is not None:
+        return refuse(cls, why or NOT_WATER)
     why = why_not_editable(obj, obj.data)
     if why is not None:
         return refuse(cls, why)
     return True
+
+
+def selected_water_allowing(cls, context, feature, nothing):
+    """What Float, Keep Water Out and Add Wake ask: objects that are not water are selected
+    (`nothing` says what to select otherwise) with at most one water, which they then act on and
+    whose kind must allow `feature` (`kind.FEATURES`). A water picked by where an object is gets
+    the same refusal when the operator runs (`floating.water_for`, then the water function)."""
+    if all(water_material(obj) is not None for obj in context.selected_objects):
+        return refuse(cls, nothing)
+    chosen = [obj for obj in context.selected_objects if water_material(obj) is not None]
+    if len(chosen) > 1:
+        return refuse(cls, "Select one water at most: the other objects act on it")
+    why = kind.refusal(chosen[0], feature, subject=f"'{chosen[0].name}'") if chosen else None
+    return refuse(cls, why) if why is not None else True
 
 
 def selected_waters(context):
@@ -95,10 +111,11 @@ def selected_water(cls, context):
 
 
 def broken_water(cls, context):
-    """The active object is water needing repair, with a local material."""
+    """The active object is water needing repair (its kind allows it), with a local material."""
+    why = kind.refusal(context.active_object, "repair")
+    if why is not None:
+        return refuse(cls, why)
     material = water_material(context.active_object)
-    if material is None:
-        return refuse(cls, NOT_WATER)
     why = why_not_editable(material)
     if why is not None:
         return refuse(cls, why)

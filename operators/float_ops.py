@@ -61,10 +61,10 @@ class OBJECT_OT_water_float(bpy.types.Operator):
 
     @classmethod
     def poll(cls, context):
-        floaters = not_water(context)
-        if not floaters:
-            return _poll.refuse(cls, "Select the objects to float (and, if you like, the water)")
-        for obj in floaters:
+        nothing = "Select the objects to float (and, if you like, the water)"
+        if not _poll.selected_water_allowing(cls, context, "floating", nothing):
+            return False
+        for obj in not_water(context):
             why = why_not_editable(obj)
             if why is not None:
                 return _poll.refuse(cls, why)

@@ -5,7 +5,7 @@ import bpy
 
 from ..water import keep_out
 from . import _poll
-from ._selected import not_water, run_on_selected, take_off_selected
+from ._selected import run_on_selected, take_off_selected
 
 
 class OBJECT_OT_water_keep_out(bpy.types.Operator):
@@ -19,11 +19,8 @@ class OBJECT_OT_water_keep_out(bpy.types.Operator):
 
     @classmethod
     def poll(cls, context):
-        if not not_water(context):
-            return _poll.refuse(
-                cls, "Select the hulls to keep the water out of (and, if you like, the water)"
-            )
-        return True
+        nothing = "Select the hulls to keep the water out of (and, if you like, the water)"
+        return _poll.selected_water_allowing(cls, context, "keep_out", nothing)
 
     def execute(self, context):
         return run_on_selected(

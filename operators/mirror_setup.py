@@ -2,7 +2,7 @@
 
 import bpy
 
-from ..water import mirror
+from ..water import kind, mirror
 from ..water.values import is_water
 from . import _poll
 
@@ -33,9 +33,9 @@ class OBJECT_OT_water_mirror_setup(bpy.types.Operator):
             except ValueError as error:  # needs repair, or linked data: one line, nothing changed
                 self.report({"ERROR"}, str(error))
                 return {"CANCELLED"}
-            if not mirror.needs_mirror(water):
-                what = "has ocean shading: it reflects the world's sky and needs no mirror set-up"
-                self.report({"INFO"}, f"'{water.name}' {what}")
+            why = kind.refusal(water, "mirror", subject=f"'{water.name}'")
+            if why is not None:  # ray tracing only, no probe
+                self.report({"INFO"}, why)
             else:
                 done = ", ".join(changes) or "already set up, nothing changed"
                 self.report({"INFO"}, f"Mirror set-up for '{water.name}': {done}")

@@ -31,7 +31,7 @@ class OBJECT_OT_water_surroundings_set(bpy.types.Operator):
 
     @classmethod
     def poll(cls, context):
-        return _poll.any_water(cls, context)
+        return _poll.any_water(cls, context, "surroundings")
 
     def invoke(self, context, _event):
         context.window_manager.invoke_search_popup(self)

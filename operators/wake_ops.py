@@ -6,7 +6,7 @@ import bpy
 from ..water import wake
 from ..water.editable import NotEditableError
 from . import _poll
-from ._selected import not_water, run_on_selected, take_off_selected
+from ._selected import run_on_selected, take_off_selected
 
 
 class OBJECT_OT_water_wake_add(bpy.types.Operator):
@@ -28,9 +28,8 @@ class OBJECT_OT_water_wake_add(bpy.types.Operator):
 
     @classmethod
     def poll(cls, context):
-        if not not_water(context):
-            return _poll.refuse(cls, "Select the objects that leave a wake (and the water, if you like)")
-        return True
+        nothing = "Select the objects that leave a wake (and the water, if you like)"
+        return _poll.selected_water_allowing(cls, context, "wake", nothing)
 
     def execute(self, context):
         def act(obj, water):

@@ -3,7 +3,6 @@
 import bpy
 
 from ..water import mirror, waves
-from ..water.values import is_water
 from . import _poll
 
 
@@ -16,13 +15,10 @@ class OBJECT_OT_water_waves_add(bpy.types.Operator):
 
     @classmethod
     def poll(cls, context):
-        return _poll.any_water(cls, context)
+        return _poll.any_water(cls, context, "waves")
 
     def execute(self, context):
         obj = context.active_object
-        if not is_water(obj):
-            self.report({"ERROR"}, "The active object is not water (no Water Surface material)")
-            return {"CANCELLED"}
         waves.add_waves(obj)
         refit = mirror.fit_probe(obj)
         if len(obj.data.vertices) <= 4:

@@ -1,6 +1,8 @@
 """One model of a water: what a water is and what it allows is decided in one place (`water/kind.py`),
 and the operators, the API and the command line apply the same rules."""
 
+import re
+
 import bpy
 import pytest
 
@@ -102,3 +104,44 @@ def test_the_add_operator_has_a_property_for_every_preset_key_with_its_range(sce
         if field.kind in ("float", "int"):
             assert (prop.hard_min, prop.hard_max) == pytest.approx((field.min, field.max))
             assert prop.default == pytest.approx(field.default)
+
+
+# What floating offers, each with the API call that gives it and the operator that does.
+_OFFERS = {
+    "floating": (lambda api, boat, water: api.float_on_water(boat, water, wake=False), "water_float"),
+    "wake": (lambda api, boat, water: api.add_wake_source(boat, water), "water_wake_add"),
+    "keep_out": (lambda api, boat, water: api.keep_water_out(boat, water), "water_keep_out"),
+}
+
+
+def test_floating_a_wake_and_keep_out_follow_the_table_for_each_kind(waters, scene, monkeypatch):
+    """Issue 41 point 2: whether a water takes a floating object, a wake or a keep-out is
+    `kind.FEATURES`' answer, for the API and the operators' polls alike, in `kind.refusal`'s
+    words: every kind takes them, and a kind the table is made to refuse is refused."""
+    kind, api = harness.addon("water.kind"), _api()
+    boat = harness.add_cube(scene, (0.0, 0.0, 0.0), size=0.6, name="Boat")
+    for name, water in waters.items():
+        _activate(boat)
+        water.select_set(True)
+        for feature, (_call, operator) in _OFFERS.items():
+            assert feature in kind.FEATURES[name]
+            assert getattr(bpy.ops.object, operator).poll(), (name, feature)
+        for feature, (call, operator) in _OFFERS.items():
+            with monkeypatch.context() as patch:
+                patch.setitem(kind.FEATURES, name, kind.FEATURES[name] - {feature})
+                why = kind.refusal(water, feature, subject=f"'{water.name}'")
+                assert why is not None and "\n" not in why
+                why = re.escape(why)
+                with pytest.raises((api.FloatError, api.WakeError, api.KeepOutError), match=why):
+                    call(api, boat, water)
+                assert not getattr(bpy.ops.object, operator).poll(), (name, feature)
+                with pytest.raises(RuntimeError, match=why):
+                    getattr(bpy.ops.object, operator)()
+                if feature == "wake":  # floating adds a wake unless told not to: refused whole
+                    with pytest.raises(api.FloatError, match=why):
+                        api.float_on_water(boat, water)
+                    assert not boat.constraints, "nothing half made"
+    lake = waters["lake"]
+    for feature, (call, _operator) in _OFFERS.items():
+        assert call(api, boat, lake), f"{feature} on the lake says what it did"
+

@@ -105,7 +105,8 @@ class VIEW3D_PT_water_surface(bpy.types.Panel):
             # A replaced group, or one missing sockets: no input is drawn, only the way back.
             layout.label(text=problem, icon="ERROR")
             layout.operator("object.water_surface_repair", icon="TOOL_SETTINGS")
-            self.draw_waves(layout, context.active_object)
+            if kind.allows(context.active_object, "waves"):
+                self.draw_waves(layout, context.active_object)
             return
         obj = context.active_object
         if not kind.allows(obj, "presets"):  # ocean shading: its own inputs, the sea's or waves

@@ -13,7 +13,7 @@ or the open sea's Ocean modifier. No Python runs at render.
 import bpy
 from mathutils import Vector
 
-from . import float_rig, physical_caustics, surroundings, wake
+from . import float_rig, kind, physical_caustics, surroundings, wake
 from .editable import check_editable
 from .float_constraints import (
     FLOAT,
@@ -130,8 +130,14 @@ def float_on_water(
     follows fully, 1 = stays upright). With `wake_on`, it leaves a wake as it moves (`wake.py`;
     stopping takes off a wake floating added). Returns the changes in words."""
     check_editable(obj)
-    if water is None or not is_water(water):
+    if water is None:
         raise FloatError(f"'{obj.name}' has no water below it to float on")
+    name = f"'{getattr(water, 'name', water)}'"
+    why = kind.refusal(water, "floating", subject=name) or (
+        kind.refusal(water, "wake", subject=name) if wake_on else None
+    )
+    if why is not None:
+        raise FloatError(why)
     if water == obj:
         raise FloatError(f"'{obj.name}' is the water itself")
     _check_family(obj)

@@ -24,7 +24,7 @@ from ..nodes import SPECS
 from ..nodes import keep_out as keep_out_spec
 from ..nodes.builder import ensure_group
 from ..nodes.ownership import is_original, mark, role_of
-from . import dry_mask_math
+from . import dry_mask_math, kind
 from .editable import check_editable
 from .float_rig import footprint_settings
 from .values import is_water, water_material
@@ -222,8 +222,9 @@ def keep_water_out(obj, water, depsgraph=None):
     """Makes `water` invisible inside `obj` (a hull: its outline at the heights the water meets
     it), in EEVEE and Cycles, wherever `obj` moves; again: the mask is made anew from its shape
     now. Returns the changes in words."""
-    if not is_water(water):
-        raise KeepOutError(f"'{getattr(water, 'name', water)}' is not water")
+    why = kind.refusal(water, "keep_out", subject=f"'{getattr(water, 'name', water)}'")
+    if why is not None:
+        raise KeepOutError(why)
     if obj is None or obj == water or is_water(obj):
         raise KeepOutError("Water cannot be kept out of water: select the hull and the water")
     if obj.type not in GEOMETRY_TYPES:

@@ -16,24 +16,21 @@ LAKE = "lake"
 OCEAN = "ocean"
 OPEN_SEA = "open_sea"
 
-# What each kind of water allows. The mirror set-up's probe and light linking, the sun and
-# bump choices, lake presets and Cycles' physical caustics are the lake shading's; every kind
-# has ray tracing, surroundings, the shader's caustics (a part switched in and out of the
-# shader: the lake's depth colour and foam too), floating objects and repair. The seeds' ocean
-# shades with the normal its waves store (`stored_normal`): a wake on it tilts that one too.
+# What each kind of water allows, the only place that says it: every key is asked somewhere
+# (`allows`, `refusal` or a poll's `water_allowing`; `tests/plain/test_features_once.py`). The
+# mirror set-up's probe and light linking, the sun and bump choices, lake presets and Cycles'
+# physical caustics are the lake shading's; every kind has ray tracing, surroundings, switched
+# shader parts (the caustics; the lake's depth colour and foam too), floating, a wake, keep-out
+# and repair. Four-sine waves are the lake's and the seeds' ocean's (the open sea's are its Ocean
+# modifier); whitecaps and a swell are the open sea's. The seeds' ocean shades with the normal
+# its waves store (`stored_normal`): a wake on it tilts that one too.
+_EVERY_KIND = {"ray_tracing", "surroundings", "shader_parts", "floating", "wake", "keep_out", "repair"}
 FEATURES = {
     LAKE: frozenset(
-        {"mirror", "ray_tracing", "waves", "surroundings", "caustics", "physical_caustics"}
-        | {"floating", "repair", "presets", "sun_choice", "bump_choice", "shader_parts"}
+        _EVERY_KIND | {"waves", "mirror", "physical_caustics", "presets", "sun_choice", "bump_choice"}
     ),
-    OCEAN: frozenset(
-        {"ray_tracing", "waves", "surroundings", "caustics", "floating", "repair", "shader_parts"}
-        | {"stored_normal"}
-    ),
-    OPEN_SEA: frozenset(
-        {"ray_tracing", "surroundings", "caustics", "floating", "repair", "whitecaps", "swell"}
-        | {"shader_parts"}
-    ),
+    OCEAN: frozenset(_EVERY_KIND | {"waves", "stored_normal"}),
+    OPEN_SEA: frozenset(_EVERY_KIND | {"whitecaps", "swell"}),
 }
 
 # Why a kind refuses a feature, in words for a poll message or an error.

@@ -48,7 +48,8 @@ def _shader_path(material):
 
 
 def _sun(water, scene):
-    sun = glint_sun(water_material(water)) if kind.kind_of(water) == kind.LAKE else None
+    # Only a water that may choose its sun (`sun_choice`) has a glint that follows one.
+    sun = glint_sun(water_material(water)) if kind.allows(water, "sun_choice") else None
     return sun if sun is not None else first_sun(scene)
 
 
@@ -96,8 +97,7 @@ def enable(water, scene):
         claim(scene, f"cycles.{name}", least, holder, label, changes, at_least=True)
     label = "shader Caustics (Cycles computes them now)"
     claim(material, _shader_path(material), 0.0, holder, label, changes)
-    if kind.kind_of(water) == kind.LAKE:
-        fit_parts(material)  # the shader's caustics at 0 leave the shader: they cost nothing
+    fit_parts(material)  # the shader's caustics at 0 leave the shader: they cost nothing
     # What to let go of when switched off: the receivers and the sun by name (one renamed since is
     # left as it is), and whether the mesh was shaded flat.
     state = {"receivers": [o.name for o in receivers], "sun": sun.data.name, "flat": not all(smooth)}
@@ -132,7 +132,7 @@ def disable(water, scene):
     release(scene, REFRACTIVE, holder, "Cycles refractive caustics", changes, _alive)
     for name in MIN_BOUNCES:
         release(scene, f"cycles.{name}", holder, f"Cycles {name.replace('_', ' ')}", changes, _alive)
-    if kind.kind_of(water) == kind.LAKE:
+    if kind.allows(water, "physical_caustics"):  # the shader's Caustics `enable` set to 0
         material = water_material(water)
         release(material, _shader_path(material), holder, "shader Caustics", changes)
         fit_parts(material)  # the shader's caustics back in when their value came back

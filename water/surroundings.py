@@ -414,6 +414,9 @@ def ensure_surroundings(water, scene, collection=None):
         raise SurroundingsError("surroundings need a mesh water object")
     if is_cache(water):
         raise SurroundingsError(f"'{water.name}' is a water's surroundings cache, not a water")
+    why = kind.refusal(water, "surroundings", subject=f"'{water.name}'")
+    if why is not None:
+        raise SurroundingsError(why)
     check_editable(water)
     changes = []
     if collection is not None:

@@ -29,7 +29,7 @@ from . import footprint_math, keep_out
 from .editable import check_editable
 from .float_constraints import floating_ancestor, pose_of
 from .float_rig import OWNER_KEY, anchor_of, footprint_of, footprint_settings
-from .kind import allows
+from .kind import allows, refusal
 from .values import is_water, read_values, water_material
 from .waves import SURROUNDINGS_ROLE, get_wave_input, set_wave_input
 
@@ -147,8 +147,9 @@ def _place(water, modifier):
 def add_wake_source(obj, water, strength=1.0):
     """Makes `obj` leave a wake on `water` as it moves (again: its sizes and what it follows
     brought up to date). Returns the changes in words."""
-    if not is_water(water):
-        raise WakeError(f"'{getattr(water, 'name', water)}' is not water")
+    why = refusal(water, "wake", subject=f"'{getattr(water, 'name', water)}'")
+    if why is not None:
+        raise WakeError(why)
     if obj is None or obj == water or is_water(obj):
         raise WakeError("Water leaves no wake on water: select the moving object and the water")
     ancestor = floating_ancestor(obj)
