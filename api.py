@@ -204,8 +204,7 @@ def float_on_water(
     now. FloatError when there is no water or a size is out of range; returns the changes in
     words."""
     scene = scene or bpy.context.scene
-    if water is None:
-        water = _floating.water_below(obj, scene)
+    water = _floating.water_for(obj, scene, FloatError, water, floating_first=False)
     return _floating.float_on_water(obj, water, tilt_damping, draft, length, beam, scene, wake)
 
 
@@ -220,10 +219,7 @@ def keep_water_out(obj: bpy.types.Object, water: bpy.types.Object | None = None)
     it moves and rocks, in EEVEE and Cycles, by nodes in the water's material (no Python at
     render). Again: made anew from its shape now. KeepOutError when there is no water or `obj`
     encloses nothing; returns the changes in words."""
-    if water is None:
-        water = _floating.floating_on(obj) or _floating.water_below(obj, bpy.context.scene)
-    if water is None:
-        raise KeepOutError(f"'{obj.name}' is over no water: name the water")
+    water = _floating.water_for(obj, bpy.context.scene, KeepOutError, water)
     return _keep_out.keep_water_out(obj, water)
 
 
@@ -241,10 +237,7 @@ def add_wake_source(
     Wake` modifier whose simulation zone keeps its track), the foam as `water_wake_foam`.
     `strength` scales the waves' height. Again: its sizes brought up to date. WakeError when
     there is no water; returns the changes in words."""
-    if water is None:
-        water = _floating.floating_on(obj) or _floating.water_below(obj, bpy.context.scene)
-    if water is None:
-        raise WakeError(f"'{obj.name}' is over no water: name the water")
+    water = _floating.water_for(obj, bpy.context.scene, WakeError, water)
     return _wake.add_wake_source(obj, water, strength)
 
 

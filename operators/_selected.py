@@ -2,8 +2,7 @@
 not water, the water each one acts on, and one report for all of them."""
 
 from ..water.editable import NotEditableError
-from ..water.float_constraints import floating_on
-from ..water.floating import water_below
+from ..water.floating import water_for
 from ..water.values import is_water
 
 
@@ -20,28 +19,26 @@ def _depth(obj):
 
 
 def run_on_selected(operator, context, act, errors, nothing, floating_first=True):
-    """Calls `act(obj, water)` for each selected object that is not water, on the one selected
-    water, else the water it floats on (`floating_first`), else the water straight below or above
-    it; `errors` (exception types) become warnings, and the operator is cancelled, saying
-    `nothing` and why, when no object was done. Returns the operator's result."""
-    chosen = [obj for obj in context.selected_objects if is_water(obj)]
-    if len(chosen) > 1:
-        operator.report({"ERROR"}, "Select one water at most: the other objects act on it")
-        return {"CANCELLED"}
+    """Calls `act(obj, water)` for each selected object that is not water, on the water
+    `floating.water_for` picks for it (the selected water, else, with `floating_first`, the water
+    it floats on, else the water straight below or above it); `errors` (exception types, the
+    first raised when there is no water) become warnings, and the operator is cancelled, saying
+    `nothing` and why, when no object was done. The poll (`_poll.selected_water_allowing`) has
+    made sure at most one water is selected. Returns the operator's result."""
+    chosen = next((obj for obj in context.selected_objects if is_water(obj)), None)
     # Every object's water is found before any is acted on: acting changes the scene (a wake's
     # modifier), and ray casting an evaluated water of the depsgraph from before that crashes.
     depsgraph = context.evaluated_depsgraph_get()
-    targets = []
+    targets, skipped = [], []
     # Parents before their children: floating a parent first, its child is then refused, with
     # a reason (it rides with it), not the other way round.
     for obj in sorted(not_water(context), key=_depth):
-        water = chosen[0] if chosen else (floating_on(obj) if floating_first else None)
-        targets.append((obj, water or water_below(obj, context.scene, depsgraph)))
-    done, skipped = [], []
+        try:
+            targets.append((obj, water_for(obj, context.scene, errors[0], chosen, floating_first, depsgraph)))
+        except errors as error:
+            skipped.append(str(error))
+    done = []
     for obj, water in targets:
-        if water is None:
-            skipped.append(f"'{obj.name}' is over no water: select the water too")
-            continue
         try:
             done += act(obj, water)
         except (*errors, NotEditableError) as error:

@@ -145,3 +145,29 @@ def test_floating_a_wake_and_keep_out_follow_the_table_for_each_kind(waters, sce
     for feature, (call, _operator) in _OFFERS.items():
         assert call(api, boat, lake), f"{feature} on the lake says what it did"
 
+
+def test_the_water_an_object_acts_on_is_picked_by_one_rule(waters, scene):
+    """Issue 41 point 2: the API and the operators pick the water by `floating.water_for` and say
+    there is none in its one wording."""
+    api, floating = _api(), harness.addon("water.floating")
+    stray = harness.add_cube(scene, (0.0, -90000.0, 0.0), size=0.6, name="Stray")  # past the sea
+    why = re.escape(floating.no_water(stray))
+    for call, error in (
+        (api.float_on_water, api.FloatError),
+        (api.add_wake_source, api.WakeError),
+        (api.keep_water_out, api.KeepOutError),
+    ):
+        with pytest.raises(error, match=why):
+            call(stray)
+    _activate(stray)
+    for operator in ("water_float", "water_wake_add", "water_keep_out"):
+        with pytest.raises(RuntimeError, match=why):
+            getattr(bpy.ops.object, operator)()
+    boat = harness.add_cube(scene, (20.0, 0.0, 0.3), size=0.6, name="Boat")  # over the ocean
+    assert floating.water_for(boat, scene, LookupError) == waters["ocean"]
+    assert floating.water_for(boat, scene, LookupError, chosen=waters["lake"]) == waters["lake"]
+    api.float_on_water(boat, waters["ocean"], wake=False)
+    boat.location.x = 0.0  # over the lake now, still floating on the ocean
+    bpy.context.view_layer.update()
+    assert floating.water_for(boat, scene, LookupError) == waters["ocean"]
+    assert floating.water_for(boat, scene, LookupError, floating_first=False) == waters["lake"]

@@ -41,7 +41,7 @@ __all__ = (
     "rig_out_of_date",
     "stop_floating",
     "tilt_damping_of",
-    "water_below",
+    "water_for",
 )
 
 
@@ -53,7 +53,7 @@ def is_floating(obj):
     return bool(float_constraints(obj))
 
 
-def water_below(obj, scene, depsgraph=None):
+def _water_below(obj, scene, depsgraph=None):
     """The water whose surface lies straight below (or above) `obj`'s origin: the nearest, or None."""
     depsgraph = depsgraph or bpy.context.evaluated_depsgraph_get()
     origin = obj.matrix_world.translation
@@ -72,6 +72,22 @@ def water_below(obj, scene, depsgraph=None):
                 if best is None or distance < best[0]:
                     best = (distance, candidate)
     return best[1] if best else None
+
+
+def water_for(obj, scene, error, chosen=None, floating_first=True, depsgraph=None):
+    """The water `obj` acts on (floats on, is kept out of, leaves a wake on), the one rule for the
+    operators and the API: `chosen` when given, else (with `floating_first`) the water it floats
+    on, else the nearest water straight below or above its origin. Raises `error` (the caller's
+    exception class) when there is none, in the one wording `no_water` gives."""
+    water = chosen or (floating_on(obj) if floating_first else None) or _water_below(obj, scene, depsgraph)
+    if water is None:
+        raise error(no_water(obj))
+    return water
+
+
+def no_water(obj):
+    """Why `obj` acts on no water: none is below or above it and none was named."""
+    return f"'{obj.name}' has no water below or above it: select or name the water"
 
 
 def _constraint(obj, role, name, kind):
@@ -131,7 +147,7 @@ def float_on_water(
     stopping takes off a wake floating added). Returns the changes in words."""
     check_editable(obj)
     if water is None:
-        raise FloatError(f"'{obj.name}' has no water below it to float on")
+        raise FloatError(no_water(obj))
     name = f"'{getattr(water, 'name', water)}'"
     why = kind.refusal(water, "floating", subject=name) or (
         kind.refusal(water, "wake", subject=name) if wake_on else None

@@ -4,8 +4,8 @@ A water is an object whose material the add-on made. Its kind comes from the dat
 shading (the `Water Surface` group node) is a lake; ocean shading (the `Water Ocean Shade` and
 `Water Ocean Normal` nodes) is the seeds' ocean, or an open sea when Blender's Ocean modifier
 drives it (`open_sea.is_open_sea`). What each kind allows is the table `FEATURES`; the polls,
-the panel, the pipeline, the API, repair and the command line ask `allows` or `refusal` and
-nowhere else decides.
+the panel, the operators, the API and the water functions they call ask `allows` or `refusal`
+and nowhere else decides (the add pipeline and repair read the kind only to build its material).
 """
 
 from ..nodes.material import water_node
