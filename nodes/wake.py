@@ -91,8 +91,19 @@ def _sample(data_type, column, label):
     return Node("GeometryNodeSampleIndex", column, {"data_type": data_type, "domain": "POINT"}, label=label)
 
 
-def _track_nodes():
-    """The simulation zone: one point a step where the object is, the old ones dropped."""
+def _merge(*parts):
+    """One description of parts, each (nodes, links): their nodes in order (one key, one node) and
+    their links one after the other."""
+    nodes, links = {}, []
+    for more_nodes, more_links in parts:
+        assert not set(more_nodes) & set(nodes), set(more_nodes) & set(nodes)  # one key, one node
+        nodes |= more_nodes
+        links += more_links
+    return nodes, links
+
+
+def _track_zone_nodes():
+    """The track's simulation zone and what it follows: the object, flat on the water, and the clocks."""
     nodes = {
         "source": Node(
             "GeometryNodeObjectInfo",
@@ -126,6 +137,18 @@ def _track_nodes():
             values={"Started": 1.0},
             label="track",
         ),
+    }
+    links = (
+        ("input:Source", "source:Object"),
+        ("source:Location", "flat:#0"),
+        ("flat:Vector", "sim_in:Last"),
+    )
+    return nodes, links
+
+
+def _track_step_nodes():
+    """This step: how far the object moved, its speed, distance come and heading, stored on a new point."""
+    nodes = {
         "step": vmath("SUBTRACT", 4, "moved this step"),
         "step_length": vmath("LENGTH", 5, "metres this step"),
         "moved": math("MULTIPLY", 6, "0 on the first step"),
@@ -140,16 +163,8 @@ def _track_nodes():
         "store_speed": _store("wake_speed", "FLOAT", 9),
         "store_arc": _store("wake_arc", "FLOAT", 9),
         "store_heading": _store("wake_heading", "FLOAT_VECTOR", 10),
-        "join": Node("GeometryNodeJoinGeometry", 11, label="track + this point"),
-        "old_time": _named("wake_time", "FLOAT", 10, "when each point was"),
-        "point_age": math("SUBTRACT", 11, "age"),
-        "too_old": math("GREATER_THAN", 12, "older than Keep"),
-        "drop": Node("GeometryNodeDeleteGeometry", 12, {"domain": "POINT"}, label="drop the old"),
     }
     links = (
-        ("input:Source", "source:Object"),
-        ("source:Location", "flat:#0"),
-        ("flat:Vector", "sim_in:Last"),
         ("flat:Vector", "step:#0"),
         ("sim_in:Last", "step:#1"),
         ("step:Vector", "step_length:#0"),
@@ -174,6 +189,20 @@ def _track_nodes():
         ("arc:Value", "store_arc:Value"),
         ("store_arc:Geometry", "store_heading:Geometry"),
         ("heading:Result", "store_heading:Value"),
+    )
+    return nodes, links
+
+
+def _track_keep_nodes():
+    """The track kept: the new point joined to the old ones, those older than Keep dropped."""
+    nodes = {
+        "join": Node("GeometryNodeJoinGeometry", 11, label="track + this point"),
+        "old_time": _named("wake_time", "FLOAT", 10, "when each point was"),
+        "point_age": math("SUBTRACT", 11, "age"),
+        "too_old": math("GREATER_THAN", 12, "older than Keep"),
+        "drop": Node("GeometryNodeDeleteGeometry", 12, {"domain": "POINT"}, label="drop the old"),
+    }
+    links = (
         ("store_heading:Geometry", "join:Geometry"),
         ("sim_in:Track", "join:Geometry"),
         ("join:Geometry", "drop:Geometry"),
@@ -191,10 +220,14 @@ def _track_nodes():
     return nodes, links
 
 
-def _ring_nodes():
-    """Rings: where the object enters the water (its origin crossing the water's rest level
-    downwards), a ring point; each water point takes the nearest ring's waves, `λ` = twice the
-    beam long, their envelope running out at the group speed of `ω² = g k + (σ/ρ) k³`."""
+def _track_nodes():
+    """The simulation zone: one point a step where the object is, the old ones dropped."""
+    nodes, links = _merge(_track_zone_nodes(), _track_step_nodes(), _track_keep_nodes())
+    return nodes, tuple(links)
+
+
+def _ring_spawn_nodes():
+    """Ring points, in the track's zone: where the object's origin drops below the rest level, kept 12 s."""
     nodes = {
         "src_split": Node("ShaderNodeSeparateXYZ", 2, label="its height"),
         "was_above": math("GREATER_THAN", 4, "above the water before", b=0.0),
@@ -208,52 +241,6 @@ def _ring_nodes():
         "ring_age_old": math("SUBTRACT", 11, "ring's age"),
         "ring_gone": math("GREATER_THAN", 12, "older than 12 s", b=12.0),
         "rings_drop": Node("GeometryNodeDeleteGeometry", 12, {"domain": "POINT"}, label="drop old rings"),
-        # Each water point and the nearest ring.
-        "ring_nearest": Node("GeometryNodeSampleNearest", 15, {"domain": "POINT"}, label="nearest ring"),
-        "ring_position": Node("GeometryNodeInputPosition", 15, label="ring position"),
-        "ring_time": _named("wake_ring_time", "FLOAT", 15),
-        "ring_at": _sample("FLOAT_VECTOR", 16, "its centre"),
-        "ring_began": _sample("FLOAT", 16, "when it began"),
-        "ring_count": Node("GeometryNodeAttributeDomainSize", 16, {"component": "POINTCLOUD"}, label="rings"),
-        "has_rings": Node("FunctionNodeCompare", 17, {"data_type": "INT", "operation": "GREATER_THAN"}),
-        "ring_r": vmath("DISTANCE", 17, "r"),
-        "ring_age": math("SUBTRACT", 17, "its age"),
-        "ring_lambda": math("MULTIPLY", 22, "λ = 2 B", b=2.0),
-        "ring_k": math("DIVIDE", 23, "k = 2π / λ", a=2.0 * 3.141592653589793),
-        "ring_k2": math("MULTIPLY", 24, "k²"),
-        "ring_sk2": math("MULTIPLY_ADD", 25, "g + (σ/ρ) k²", b=SURFACE_TENSION, c=G),
-        "ring_w2": math("MULTIPLY", 26, "ω² = k (g + (σ/ρ) k²)"),
-        "ring_w": math("SQRT", 27, "ω"),
-        "ring_cg_num": math("MULTIPLY_ADD", 25, "g + 3 (σ/ρ) k²", b=3.0 * SURFACE_TENSION, c=G),
-        "ring_cg_den": math("MULTIPLY", 28, "2 ω", b=2.0),
-        "ring_cg": math("DIVIDE", 29, "group speed dω/dk"),
-        "ring_front": math("MULTIPLY", 30, "front: group speed x age"),
-        "ring_dr": math("SUBTRACT", 31, "r - front"),
-        "ring_dr_l": math("DIVIDE", 32, "in wavelengths"),
-        "ring_dr2": math("MULTIPLY", 33, "²"),
-        "ring_dr2n": math("MULTIPLY", 34, "-", b=-1.0),
-        "ring_env": math("EXPONENT", 35, "envelope round the front"),
-        "ring_kr": math("MULTIPLY", 31, "k r"),
-        "ring_wt": math("MULTIPLY", 31, "ω t"),
-        "ring_phase": math("SUBTRACT", 32, "k r - ω t"),
-        "ring_wave": math("COSINE", 33, "cos"),
-        "ring_rl": math("ADD", 31, "front + λ"),
-        "ring_spread": math("DIVIDE", 32, "λ / (front + λ)"),
-        "ring_spread_s": math("SQRT", 33, "spreading"),
-        "ring_fade_s": math("DIVIDE", 31, "age / 4 s", b=4.0),
-        "ring_fade_n": math("MULTIPLY", 32, "-", b=-1.0),
-        "ring_fade": math("EXPONENT", 33, "fading"),
-        "ring_size": math("MULTIPLY", 31, "0.3 B", b=0.3),
-        "ring_a1": math("MULTIPLY", 36, ""),
-        "ring_a2": math("MULTIPLY", 37, ""),
-        "ring_a3": math("MULTIPLY", 38, ""),
-        "ring_a4": math("MULTIPLY", 39, ""),
-        "ring_a5": math("MULTIPLY", 40, "x Strength"),
-        # A switch on one value: with no ring, the ring's field is never evaluated.
-        "ring": Node(
-            "GeometryNodeSwitch", 41, {"input_type": "FLOAT"}, {"False": 0.0}, "ring height, if any"
-        ),
-        "total": math("ADD", 47, "wake + ring"),
     }
     links = (
         ("source:Location", "src_split:Vector"),
@@ -277,6 +264,25 @@ def _ring_nodes():
         ("ring_gone:Value", "rings_drop:Selection"),
         ("rings_drop:Geometry", "sim_out:Rings"),
         ("src_split:Z", "sim_out:Last Z"),
+    )
+    return nodes, links
+
+
+def _ring_nearest_nodes():
+    """Each water point's nearest ring: its centre, its age and whether there is any."""
+    nodes = {
+        # Each water point and the nearest ring.
+        "ring_nearest": Node("GeometryNodeSampleNearest", 15, {"domain": "POINT"}, label="nearest ring"),
+        "ring_position": Node("GeometryNodeInputPosition", 15, label="ring position"),
+        "ring_time": _named("wake_ring_time", "FLOAT", 15),
+        "ring_at": _sample("FLOAT_VECTOR", 16, "its centre"),
+        "ring_began": _sample("FLOAT", 16, "when it began"),
+        "ring_count": Node("GeometryNodeAttributeDomainSize", 16, {"component": "POINTCLOUD"}, label="rings"),
+        "has_rings": Node("FunctionNodeCompare", 17, {"data_type": "INT", "operation": "GREATER_THAN"}),
+        "ring_r": vmath("DISTANCE", 17, "r"),
+        "ring_age": math("SUBTRACT", 17, "its age"),
+    }
+    links = (
         ("sim_out:Rings", "ring_nearest:Geometry"),
         ("p_flat:Vector", "ring_nearest:Sample Position"),
         ("sim_out:Rings", "ring_at:Geometry"),
@@ -291,6 +297,30 @@ def _ring_nodes():
         ("ring_at:Value", "ring_r:#1"),
         ("clock:Seconds", "ring_age:#0"),
         ("ring_began:Value", "ring_age:#1"),
+    )
+    return nodes, links
+
+
+def _ring_wave_nodes():
+    """The ring's waves: λ = 2 B, ω and the group speed (`ω² = g k + (σ/ρ) k³`), the front's envelope."""
+    nodes = {
+        "ring_lambda": math("MULTIPLY", 22, "λ = 2 B", b=2.0),
+        "ring_k": math("DIVIDE", 23, "k = 2π / λ", a=2.0 * 3.141592653589793),
+        "ring_k2": math("MULTIPLY", 24, "k²"),
+        "ring_sk2": math("MULTIPLY_ADD", 25, "g + (σ/ρ) k²", b=SURFACE_TENSION, c=G),
+        "ring_w2": math("MULTIPLY", 26, "ω² = k (g + (σ/ρ) k²)"),
+        "ring_w": math("SQRT", 27, "ω"),
+        "ring_cg_num": math("MULTIPLY_ADD", 25, "g + 3 (σ/ρ) k²", b=3.0 * SURFACE_TENSION, c=G),
+        "ring_cg_den": math("MULTIPLY", 28, "2 ω", b=2.0),
+        "ring_cg": math("DIVIDE", 29, "group speed dω/dk"),
+        "ring_front": math("MULTIPLY", 30, "front: group speed x age"),
+        "ring_dr": math("SUBTRACT", 31, "r - front"),
+        "ring_dr_l": math("DIVIDE", 32, "in wavelengths"),
+        "ring_dr2": math("MULTIPLY", 33, "²"),
+        "ring_dr2n": math("MULTIPLY", 34, "-", b=-1.0),
+        "ring_env": math("EXPONENT", 35, "envelope round the front"),
+    }
+    links = (
         ("input:Beam", "ring_lambda:#0"),
         ("ring_lambda:Value", "ring_k:#1"),
         ("ring_k:Value", "ring_k2:#0"),
@@ -313,6 +343,36 @@ def _ring_nodes():
         ("ring_dr_l:Value", "ring_dr2:#1"),
         ("ring_dr2:Value", "ring_dr2n:#0"),
         ("ring_dr2n:Value", "ring_env:#0"),
+    )
+    return nodes, links
+
+
+def _ring_height_nodes():
+    """The ring's height (phase, spreading, fading, size x Strength), 0 with no ring, added to the wake."""
+    nodes = {
+        "ring_kr": math("MULTIPLY", 31, "k r"),
+        "ring_wt": math("MULTIPLY", 31, "ω t"),
+        "ring_phase": math("SUBTRACT", 32, "k r - ω t"),
+        "ring_wave": math("COSINE", 33, "cos"),
+        "ring_rl": math("ADD", 31, "front + λ"),
+        "ring_spread": math("DIVIDE", 32, "λ / (front + λ)"),
+        "ring_spread_s": math("SQRT", 33, "spreading"),
+        "ring_fade_s": math("DIVIDE", 31, "age / 4 s", b=4.0),
+        "ring_fade_n": math("MULTIPLY", 32, "-", b=-1.0),
+        "ring_fade": math("EXPONENT", 33, "fading"),
+        "ring_size": math("MULTIPLY", 31, "0.3 B", b=0.3),
+        "ring_a1": math("MULTIPLY", 36, ""),
+        "ring_a2": math("MULTIPLY", 37, ""),
+        "ring_a3": math("MULTIPLY", 38, ""),
+        "ring_a4": math("MULTIPLY", 39, ""),
+        "ring_a5": math("MULTIPLY", 40, "x Strength"),
+        # A switch on one value: with no ring, the ring's field is never evaluated.
+        "ring": Node(
+            "GeometryNodeSwitch", 41, {"input_type": "FLOAT"}, {"False": 0.0}, "ring height, if any"
+        ),
+        "total": math("ADD", 47, "wake + ring"),
+    }
+    links = (
         ("ring_k:Value", "ring_kr:#0"),
         ("ring_r:Value", "ring_kr:#1"),
         ("ring_w:Value", "ring_wt:#0"),
@@ -345,6 +405,16 @@ def _ring_nodes():
         ("ring:Output", "total:#1"),
     )
     return nodes, links
+
+
+def _ring_nodes():
+    """Rings: where the object enters the water (its origin crossing the water's rest level
+    downwards), a ring point; each water point takes the nearest ring's waves, `λ` = twice the
+    beam long, their envelope running out at the group speed of `ω² = g k + (σ/ρ) k³`."""
+    nodes, links = _merge(
+        _ring_spawn_nodes(), _ring_nearest_nodes(), _ring_wave_nodes(), _ring_height_nodes()
+    )
+    return nodes, tuple(links)
 
 
 def _frame_nodes():
@@ -447,74 +517,84 @@ def _walk(tag, geometry, start, steps, column):
     ]
     index = start
     for step in range(1, steps + 1):
-        n = f"{tag}_{step}"
-        c = column + 2 + 6 * (step - 1)
-        nodes |= {
-            n + "_at": _clamped_sample("FLOAT_VECTOR", c, f"step {step}: its point P"),
-            n + "_newer_i": math("ADD", c, "the newer one"),
-            n + "_newer": _clamped_sample("FLOAT_VECTOR", c + 1, "the newer point"),
-            n + "_d": vmath("SUBTRACT", c + 2, "d: the segment to it"),
-            n + "_v": vmath("SUBTRACT", c + 2, "p - P"),
-            n + "_vd": vmath("DOT_PRODUCT", c + 3, "(p - P) . d"),
-            n + "_dd": vmath("DOT_PRODUCT", c + 3, "|d|²"),
-            n + "_dd_e": math("ADD", c + 4, "never 0", b=1e-9),
-            n + "_t": math("DIVIDE", c + 4, "segments towards the newer"),
-            n + "_step": math("MULTIPLY", c + 5, "indices towards the newer"),
-            n + "_moved": math("ADD", c + 5, "index + that"),
-            n + "_round": math("ROUND", c + 5, "a point's index"),
-            n + "_low": math("MAXIMUM", c + 6, "within the points", b=0.0),
-            n + "_new": math("MINIMUM", c + 6, "the index stepped to"),
-            # Kept only if nearer: beyond a bend's centre the step would lead away.
-            n + "_new_at": _clamped_sample("FLOAT_VECTOR", c + 7, "its point"),
-            n + "_new_d": vmath("DISTANCE", c + 8, "p to it"),
-            n + "_old_d": vmath("LENGTH", c + 8, "p to P"),
-            n + "_nearer": math("LESS_THAN", c + 9, "nearer"),
-            f"{tag}_i{step}": Node(
-                "ShaderNodeMix", c + 10, {"data_type": "FLOAT"}, label=f"index after step {step}"
-            ),
-        }
-        links += [
-            (geometry, n + "_at:Geometry"),
-            (f"{tag}_where:Position", n + "_at:Value"),
-            (index, n + "_at:Index"),
-            (index, n + "_newer_i:#0"),
-            ("ord_dir:Value", n + "_newer_i:#1"),
-            (geometry, n + "_newer:Geometry"),
-            (f"{tag}_where:Position", n + "_newer:Value"),
-            (n + "_newer_i:Value", n + "_newer:Index"),
-            (n + "_newer:Value", n + "_d:#0"),
-            (n + "_at:Value", n + "_d:#1"),
-            ("p_flat:Vector", n + "_v:#0"),
-            (n + "_at:Value", n + "_v:#1"),
-            (n + "_v:Vector", n + "_vd:#0"),
-            (n + "_d:Vector", n + "_vd:#1"),
-            (n + "_d:Vector", n + "_dd:#0"),
-            (n + "_d:Vector", n + "_dd:#1"),
-            (n + "_dd:Value", n + "_dd_e:#0"),
-            (n + "_vd:Value", n + "_t:#0"),
-            (n + "_dd_e:Value", n + "_t:#1"),
-            (index, n + "_moved:#0"),
-            (n + "_t:Value", n + "_step:#0"),
-            ("ord_dir:Value", n + "_step:#1"),
-            (n + "_step:Value", n + "_moved:#1"),
-            (n + "_moved:Value", n + "_round:#0"),
-            (n + "_round:Value", n + "_low:#0"),
-            (n + "_low:Value", n + "_new:#0"),
-            (f"{tag}_last:Value", n + "_new:#1"),
-            (geometry, n + "_new_at:Geometry"),
-            (f"{tag}_where:Position", n + "_new_at:Value"),
-            (n + "_new:Value", n + "_new_at:Index"),
-            ("p_flat:Vector", n + "_new_d:#0"),
-            (n + "_new_at:Value", n + "_new_d:#1"),
-            (n + "_v:Vector", n + "_old_d:#0"),
-            (n + "_new_d:Value", n + "_nearer:#0"),
-            (n + "_old_d:Value", n + "_nearer:#1"),
-            (n + "_nearer:Value", f"{tag}_i{step}:Factor"),
-            (index, f"{tag}_i{step}:A"),
-            (n + "_new:Value", f"{tag}_i{step}:B"),
-        ]
+        nodes |= _walk_step_nodes(tag, step, column + 2 + 6 * (step - 1))
+        links += _walk_step_links(tag, geometry, index, step)
         index = f"{tag}_i{step}:Result"
     return nodes, links
+
+
+def _walk_step_nodes(tag, step, c):
+    """One step of `_walk`, its nodes (from column `c`): the index moved along the segment, if nearer."""
+    n = f"{tag}_{step}"
+    return {
+        n + "_at": _clamped_sample("FLOAT_VECTOR", c, f"step {step}: its point P"),
+        n + "_newer_i": math("ADD", c, "the newer one"),
+        n + "_newer": _clamped_sample("FLOAT_VECTOR", c + 1, "the newer point"),
+        n + "_d": vmath("SUBTRACT", c + 2, "d: the segment to it"),
+        n + "_v": vmath("SUBTRACT", c + 2, "p - P"),
+        n + "_vd": vmath("DOT_PRODUCT", c + 3, "(p - P) . d"),
+        n + "_dd": vmath("DOT_PRODUCT", c + 3, "|d|²"),
+        n + "_dd_e": math("ADD", c + 4, "never 0", b=1e-9),
+        n + "_t": math("DIVIDE", c + 4, "segments towards the newer"),
+        n + "_step": math("MULTIPLY", c + 5, "indices towards the newer"),
+        n + "_moved": math("ADD", c + 5, "index + that"),
+        n + "_round": math("ROUND", c + 5, "a point's index"),
+        n + "_low": math("MAXIMUM", c + 6, "within the points", b=0.0),
+        n + "_new": math("MINIMUM", c + 6, "the index stepped to"),
+        # Kept only if nearer: beyond a bend's centre the step would lead away.
+        n + "_new_at": _clamped_sample("FLOAT_VECTOR", c + 7, "its point"),
+        n + "_new_d": vmath("DISTANCE", c + 8, "p to it"),
+        n + "_old_d": vmath("LENGTH", c + 8, "p to P"),
+        n + "_nearer": math("LESS_THAN", c + 9, "nearer"),
+        f"{tag}_i{step}": Node(
+            "ShaderNodeMix", c + 10, {"data_type": "FLOAT"}, label=f"index after step {step}"
+        ),
+    }
+
+
+def _walk_step_links(tag, geometry, index, step):
+    """One step of `_walk`, its links: from the index `index` ("node:socket") it starts at."""
+    n = f"{tag}_{step}"
+    return [
+        (geometry, n + "_at:Geometry"),
+        (f"{tag}_where:Position", n + "_at:Value"),
+        (index, n + "_at:Index"),
+        (index, n + "_newer_i:#0"),
+        ("ord_dir:Value", n + "_newer_i:#1"),
+        (geometry, n + "_newer:Geometry"),
+        (f"{tag}_where:Position", n + "_newer:Value"),
+        (n + "_newer_i:Value", n + "_newer:Index"),
+        (n + "_newer:Value", n + "_d:#0"),
+        (n + "_at:Value", n + "_d:#1"),
+        ("p_flat:Vector", n + "_v:#0"),
+        (n + "_at:Value", n + "_v:#1"),
+        (n + "_v:Vector", n + "_vd:#0"),
+        (n + "_d:Vector", n + "_vd:#1"),
+        (n + "_d:Vector", n + "_dd:#0"),
+        (n + "_d:Vector", n + "_dd:#1"),
+        (n + "_dd:Value", n + "_dd_e:#0"),
+        (n + "_vd:Value", n + "_t:#0"),
+        (n + "_dd_e:Value", n + "_t:#1"),
+        (index, n + "_moved:#0"),
+        (n + "_t:Value", n + "_step:#0"),
+        ("ord_dir:Value", n + "_step:#1"),
+        (n + "_step:Value", n + "_moved:#1"),
+        (n + "_moved:Value", n + "_round:#0"),
+        (n + "_round:Value", n + "_low:#0"),
+        (n + "_low:Value", n + "_new:#0"),
+        (f"{tag}_last:Value", n + "_new:#1"),
+        (geometry, n + "_new_at:Geometry"),
+        (f"{tag}_where:Position", n + "_new_at:Value"),
+        (n + "_new:Value", n + "_new_at:Index"),
+        ("p_flat:Vector", n + "_new_d:#0"),
+        (n + "_new_at:Value", n + "_new_d:#1"),
+        (n + "_v:Vector", n + "_old_d:#0"),
+        (n + "_new_d:Value", n + "_nearer:#0"),
+        (n + "_old_d:Value", n + "_nearer:#1"),
+        (n + "_nearer:Value", f"{tag}_i{step}:Factor"),
+        (index, f"{tag}_i{step}:A"),
+        (n + "_new:Value", f"{tag}_i{step}:B"),
+    ]
 
 
 GUESS_CELLS = 48  # the guess grid's points a side (48² nearest-point searches a frame)
@@ -611,10 +691,8 @@ def _walks():
     return nodes | more_nodes, links + more_links
 
 
-def _root(tag, tau, sign, column):
-    """One stationary wave (tan θ from `tau`, a "node:socket"): its term, the stationary-phase
-    share `p̂(k) sqrt(2π / |ψ''|)` x `cos(ψ ± π/4)` (`sign`: +1 transverse, -1 diverging), made
-    smaller where it is shorter than four mesh cells (`Detail`)."""
+def _root_wave(tag, tau, sign, column):
+    """One stationary wave's shape: k = g / (U² cos² θ) and cos(ψ ± π/4)."""
     n = f"{tag}_"
     nodes = {
         n + "tau2": math("MULTIPLY", column, f"{tag}: tan² θ"),
@@ -628,6 +706,31 @@ def _root(tag, tau, sign, column):
             "MULTIPLY_ADD", column + 4, "k (x cos θ - y sin θ) ± π/4", c=sign * 3.141592653589793 / 4.0
         ),
         n + "wave": math("COSINE", column + 5, "cos"),
+    }
+    links = (
+        (tau, n + "tau2:#0"),
+        (tau, n + "tau2:#1"),
+        (n + "tau2:Value", n + "q2:#0"),
+        (n + "q2:Value", n + "q:#0"),
+        (n + "q2:Value", n + "k:#0"),
+        ("at_kscale:Value", n + "k:#1"),
+        ("y:Value", n + "y_tau:#0"),
+        (tau, n + "y_tau:#1"),
+        ("x_pos:Value", n + "path:#0"),
+        (n + "y_tau:Value", n + "path:#1"),
+        (n + "path:Value", n + "phase_a:#0"),
+        (n + "q:Value", n + "phase_a:#1"),
+        (n + "phase_a:Value", n + "phase:#0"),
+        ("at_kscale:Value", n + "phase:#1"),
+        (n + "phase:Value", n + "wave:#0"),
+    )
+    return nodes, links
+
+
+def _root_size(tag, column):
+    """One stationary wave's size (the hull's share p̂(k), sqrt(2π / |ψ''|), the mesh's weight) x its shape."""
+    n = f"{tag}_"
+    nodes = {
         # The hull's share of waves k long: (k L / 2π)² exp(1 - (k L / 2π)²), 1 at λ = L.
         n + "kl": math("MULTIPLY", column + 3, "k L / 2π"),
         n + "kl2": math("MULTIPLY", column + 4, "(k L / 2π)²"),
@@ -653,21 +756,6 @@ def _root(tag, tau, sign, column):
         n + "term": math("MULTIPLY", column + 10, f"{tag} term"),
     }
     links = (
-        (tau, n + "tau2:#0"),
-        (tau, n + "tau2:#1"),
-        (n + "tau2:Value", n + "q2:#0"),
-        (n + "q2:Value", n + "q:#0"),
-        (n + "q2:Value", n + "k:#0"),
-        ("at_kscale:Value", n + "k:#1"),
-        ("y:Value", n + "y_tau:#0"),
-        (tau, n + "y_tau:#1"),
-        ("x_pos:Value", n + "path:#0"),
-        (n + "y_tau:Value", n + "path:#1"),
-        (n + "path:Value", n + "phase_a:#0"),
-        (n + "q:Value", n + "phase_a:#1"),
-        (n + "phase_a:Value", n + "phase:#0"),
-        ("at_kscale:Value", n + "phase:#1"),
-        (n + "phase:Value", n + "wave:#0"),
         (n + "k:Value", n + "kl:#0"),
         ("l_2pi:Value", n + "kl:#1"),
         (n + "kl:Value", n + "kl2:#0"),
@@ -696,8 +784,16 @@ def _root(tag, tau, sign, column):
     return nodes, links
 
 
-def _kelvin_nodes():
-    """The height: Kelvin's pattern (`KELVIN_SPEC`) x its size, faded, grown in from the hull."""
+def _root(tag, tau, sign, column):
+    """One stationary wave (tan θ from `tau`, a "node:socket"): its term, the stationary-phase
+    share `p̂(k) sqrt(2π / |ψ''|)` x `cos(ψ ± π/4)` (`sign`: +1 transverse, -1 diverging), made
+    smaller where it is shorter than four mesh cells (`Detail`)."""
+    nodes, links = _merge(_root_wave(tag, tau, sign, column), _root_size(tag, column))
+    return nodes, tuple(links)
+
+
+def _kelvin_scale_nodes():
+    """The pattern's scales: g / U², Fr², the fading with age and the ramp from the hull back."""
     nodes = {
         "u": math("MAXIMUM", 22, "U (> 0.2 m/s)", b=0.2),
         "u2": math("MULTIPLY", 23, "U²"),
@@ -716,23 +812,6 @@ def _kelvin_nodes():
         ),
         "in_track": math("LESS_THAN", 22, "not behind where it began"),
         "in_track_x": math("ADD", 21, "track's length + 1 cell"),
-        "kelvin": Node("GeometryNodeGroup", 30, label="Kelvin's pattern", group=KELVIN_NAME),
-        "e3": math("MULTIPLY", 43, ""),
-        "amp": math("MULTIPLY", 27, "faded height scale"),
-        "e6": math("MULTIPLY", 46, ""),
-        "eta": math("MULTIPLY", 47, "height"),
-        "lift": Node("ShaderNodeCombineXYZ", 48, label="up by the height"),
-        # Only the points near the track are computed (a field is evaluated only where its
-        # node's selection holds): the box round the zone (`_zone_nodes`) and the rings' box,
-        # wider by how far a ring runs out in its 12 s. Two compares a point.
-        "ring_box": Node("GeometryNodeBoundBox", 41, label="the rings' box"),
-        "ring_reach": math("MULTIPLY_ADD", 41, "a ring's reach: group speed x 12 s + 2 λ", b=12.0),
-        "ring_twice": math("MULTIPLY", 40, "2 λ", b=2.0),
-        "ring_none": math("MULTIPLY_ADD", 42, "none: far below zero", b=1e7, c=-1e7),
-        "ring_margin": math("ADD", 43, "ring margin"),
-        "ring_low": vmath("SUBTRACT", 44, "rings' low corner"),
-        "ring_high": vmath("ADD", 44, "rings' high corner"),
-        "set": Node("GeometryNodeSetPosition", 49, label="the wake"),
     }
     links = [
         ("t_speed:Attribute", "u:#0"),
@@ -753,6 +832,32 @@ def _kelvin_nodes():
         ("input:Detail", "in_track_x:#1"),
         ("x:Value", "in_track:#0"),
         ("in_track_x:Value", "in_track:#1"),
+    ]
+    return nodes, links
+
+
+def _kelvin_set_nodes():
+    """The height set: the pattern x its scales, lifted, on the points of the zone and the rings' box."""
+    nodes = {
+        "kelvin": Node("GeometryNodeGroup", 30, label="Kelvin's pattern", group=KELVIN_NAME),
+        "e3": math("MULTIPLY", 43, ""),
+        "amp": math("MULTIPLY", 27, "faded height scale"),
+        "e6": math("MULTIPLY", 46, ""),
+        "eta": math("MULTIPLY", 47, "height"),
+        "lift": Node("ShaderNodeCombineXYZ", 48, label="up by the height"),
+        # Only the points near the track are computed (a field is evaluated only where its
+        # node's selection holds): the box round the zone (`_zone_nodes`) and the rings' box,
+        # wider by how far a ring runs out in its 12 s. Two compares a point.
+        "ring_box": Node("GeometryNodeBoundBox", 41, label="the rings' box"),
+        "ring_reach": math("MULTIPLY_ADD", 41, "a ring's reach: group speed x 12 s + 2 λ", b=12.0),
+        "ring_twice": math("MULTIPLY", 40, "2 λ", b=2.0),
+        "ring_none": math("MULTIPLY_ADD", 42, "none: far below zero", b=1e7, c=-1e7),
+        "ring_margin": math("ADD", 43, "ring margin"),
+        "ring_low": vmath("SUBTRACT", 44, "rings' low corner"),
+        "ring_high": vmath("ADD", 44, "rings' high corner"),
+        "set": Node("GeometryNodeSetPosition", 49, label="the wake"),
+    }
+    links = [
         ("x:Value", "kelvin:X"),
         ("y:Value", "kelvin:Y"),
         ("at_kscale:Value", "kelvin:K"),
@@ -782,12 +887,17 @@ def _kelvin_nodes():
         ("ring_margin:Value", "ring_high:#1"),
         ("in_wake:Value", "set:Selection"),
     ]
+    return nodes, links
+
+
+def _kelvin_nodes():
+    """The height: Kelvin's pattern (`KELVIN_SPEC`) x its size, faded, grown in from the hull."""
+    nodes, links = _merge(_kelvin_scale_nodes(), _kelvin_set_nodes())
     return nodes, tuple(links)
 
 
-def _pattern_nodes():
-    """Kelvin's pattern inside its group: the two stationary waves inside the wedge (the roots
-    of `2 t τ² - τ + t = 0`), Airy's width on the arms and the fall beyond them."""
+def _pattern_wedge_nodes():
+    """The wedge: tan α = y / x, its root s and the two stationary waves' tan θ."""
     nodes = {
         "x_pos": math("MAXIMUM", 22, "x (> 0)", b=1e-3),
         "tan_a": math("DIVIDE", 23, "tan α = y / x"),
@@ -801,6 +911,31 @@ def _pattern_nodes():
         "tau_t": math("DIVIDE", 30, "transverse: tan θ = 2 tan α / (1 + s)"),
         "four_t": math("MULTIPLY", 29, "4 tan α", b=4.0),
         "tau_d": math("DIVIDE", 30, "diverging: tan θ = (1 + s) / (4 tan α)"),
+    }
+    links = [
+        ("input:X", "x_pos:#0"),
+        ("input:Y", "tan_a:#0"),
+        ("x_pos:Value", "tan_a:#1"),
+        ("tan_a:Value", "t:#0"),
+        ("t:Value", "t2:#0"),
+        ("t:Value", "t2:#1"),
+        ("t2:Value", "disc:#0"),
+        ("disc:Value", "disc_in:#0"),
+        ("disc_in:Value", "s:#0"),
+        ("s:Value", "one_s:#0"),
+        ("t:Value", "two_t:#0"),
+        ("two_t:Value", "tau_t:#0"),
+        ("one_s:Value", "tau_t:#1"),
+        ("t:Value", "four_t:#0"),
+        ("one_s:Value", "tau_d:#0"),
+        ("four_t:Value", "tau_d:#1"),
+    ]
+    return nodes, links
+
+
+def _pattern_arms_nodes():
+    """The roots' scales (4 cells, L / 2π), Airy's width on the arms, the fall beyond them and the sum."""
+    nodes = {
         "four_cells": math("MULTIPLY", 22, "4 cells", b=4.0),
         "sum": math("ADD", 40, "both waves"),
         "l_2pi": math("DIVIDE", 22, "L / 2π", b=2.0 * 3.141592653589793),
@@ -821,22 +956,6 @@ def _pattern_nodes():
         "e1": math("MULTIPLY", 41, "the pattern"),
     }
     links = [
-        ("input:X", "x_pos:#0"),
-        ("input:Y", "tan_a:#0"),
-        ("x_pos:Value", "tan_a:#1"),
-        ("tan_a:Value", "t:#0"),
-        ("t:Value", "t2:#0"),
-        ("t:Value", "t2:#1"),
-        ("t2:Value", "disc:#0"),
-        ("disc:Value", "disc_in:#0"),
-        ("disc_in:Value", "s:#0"),
-        ("s:Value", "one_s:#0"),
-        ("t:Value", "two_t:#0"),
-        ("two_t:Value", "tau_t:#0"),
-        ("one_s:Value", "tau_t:#1"),
-        ("t:Value", "four_t:#0"),
-        ("one_s:Value", "tau_d:#0"),
-        ("four_t:Value", "tau_d:#1"),
         ("input:Detail", "four_cells:#0"),
         ("t_term:Value", "sum:#0"),
         ("d_term:Value", "sum:#1"),
@@ -861,6 +980,13 @@ def _pattern_nodes():
         ("outside:Value", "e1:#1"),
         ("e1:Value", "output:Pattern"),
     ]
+    return nodes, links
+
+
+def _pattern_nodes():
+    """Kelvin's pattern inside its group: the two stationary waves inside the wedge (the roots
+    of `2 t τ² - τ + t = 0`), Airy's width on the arms and the fall beyond them."""
+    nodes, links = _merge(_pattern_wedge_nodes(), _pattern_arms_nodes())
     for tag, tau, sign in (("t", "tau_t:Value", 1.0), ("d", "tau_d:Value", -1.0)):
         more_nodes, more_links = _root(tag, tau, sign, 31)
         nodes |= more_nodes
@@ -1241,8 +1367,8 @@ def _segment_links(n, start, end):
     )
 
 
-def _foam_nodes():
-    """Foam round the hull as it moves, and along its track, drifting, spreading and fading."""
+def _hull_foam_nodes():
+    """Foam round the hull: within half its beam of the segment from stern to bow, while it moves."""
     nodes = {
         # Round the hull: within half its beam of the segment from stern to bow, and a little more.
         "half_length": math("MULTIPLY", 22, "L / 2", b=0.5),
@@ -1263,47 +1389,6 @@ def _foam_nodes():
         "moving_c": Node("ShaderNodeClamp", 30, label="0..1"),
         "hull_foam_cl": Node("ShaderNodeClamp", 30, label="0..1"),
         "hull_foam": math("MULTIPLY", 31, "foam round the hull"),
-        # Behind: the track's points moved downwind by their age.
-        "t_age": math("SUBTRACT", 17, "each track point's age"),
-        "drift": vmath("SCALE", 18, "drifted downwind"),
-        "drift_flat": vmath("MULTIPLY", 18, "on the plane", b=(1.0, 1.0, 0.0)),
-        "drifted": Node("GeometryNodeSetPosition", 19, label="track, drifted"),
-        "d_position": Node("GeometryNodeInputPosition", 20),
-        "d_at_position": _sample("FLOAT_VECTOR", 21, "where it drifted to"),
-        # The trail's width and weight are worked out on the track's points, then sampled.
-        "d_at_width": _sample("FLOAT", 21, "its width"),
-        "d_at_weight": _sample("FLOAT", 21, "its weight"),
-        # The distance to the drifted track's line, not to its nearest point: a track point a
-        # frame lies metres apart at speed, and the trail would break into dots.
-        "d_distance": math("MINIMUM", 22, "distance to the trail's line"),
-        **_segment_distance("d_back", 21),
-        **_segment_distance("d_ahead", 21),
-        "d_i_back": math("SUBTRACT", 20, "the point before", b=1.0),
-        "d_i_ahead": math("ADD", 20, "the point after", b=1.0),
-        "d_back_end": _clamped_sample("FLOAT_VECTOR", 21, "the point before it"),
-        "d_ahead_end": _clamped_sample("FLOAT_VECTOR", 21, "the point after it"),
-        "f_time": _named("wake_time", "FLOAT", 17, "when each was"),
-        "f_speed": _named("wake_speed", "FLOAT", 17, "its speed then"),
-        "d_age": math("SUBTRACT", 18, "each track point's age"),
-        "d_spread": math("MULTIPLY", 23, "0.1 m/s x age", b=0.1),
-        "third_beam": math("MULTIPLY", 23, "B / 3", b=1.0 / 3.0),
-        "d_width": math("ADD", 24, "B / 3 + spread"),
-        "d_ratio": math("DIVIDE", 25, "in widths"),
-        "d_ratio2": math("MULTIPLY", 26, "²"),
-        "d_gauss": math("MULTIPLY", 27, "-", b=-1.0),
-        "d_shape": math("EXPONENT", 28, "across the trail"),
-        "d_age_s": math("DIVIDE", 23, "age / Foam Fade"),
-        "d_age_n": math("MULTIPLY", 24, "-", b=-1.0),
-        "d_fade": math("EXPONENT", 25, "fading"),
-        "d_moving": math("MULTIPLY", 24, "moving then", b=1.0),
-        "d_moving_c": Node("ShaderNodeClamp", 25, label="0..1"),
-        "d_f1": math("MULTIPLY", 26, "fading x moving then"),
-        "trail_foam_full": math("MULTIPLY", 27, "x 0.7: thinner than at the hull", b=0.7),
-        "trail_foam": math("MULTIPLY", 31, "foam along the track"),
-        "foam_here": math("MAXIMUM", 32, "this wake's foam"),
-        "foam_before": _named(FOAM_ATTRIBUTE, "FLOAT", 32, "foam of wakes before"),
-        "foam": math("MAXIMUM", 33, "any wake's foam"),
-        "store_foam": _store(FOAM_ATTRIBUTE, "FLOAT", 50),
     }
     links = (
         ("input:Length", "half_length:#0"),
@@ -1332,6 +1417,34 @@ def _foam_nodes():
         ("hull_foam_c:Value", "hull_foam_cl:Value"),
         ("hull_foam_cl:Result", "hull_foam:#0"),
         ("moving_c:Result", "hull_foam:#1"),
+    )
+    return nodes, links
+
+
+def _trail_line_nodes():
+    """The trail: the track drifted downwind, and each water point's distance to its line."""
+    nodes = {
+        # Behind: the track's points moved downwind by their age.
+        "t_age": math("SUBTRACT", 17, "each track point's age"),
+        "drift": vmath("SCALE", 18, "drifted downwind"),
+        "drift_flat": vmath("MULTIPLY", 18, "on the plane", b=(1.0, 1.0, 0.0)),
+        "drifted": Node("GeometryNodeSetPosition", 19, label="track, drifted"),
+        "d_position": Node("GeometryNodeInputPosition", 20),
+        "d_at_position": _sample("FLOAT_VECTOR", 21, "where it drifted to"),
+        # The trail's width and weight are worked out on the track's points, then sampled.
+        "d_at_width": _sample("FLOAT", 21, "its width"),
+        "d_at_weight": _sample("FLOAT", 21, "its weight"),
+        # The distance to the drifted track's line, not to its nearest point: a track point a
+        # frame lies metres apart at speed, and the trail would break into dots.
+        "d_distance": math("MINIMUM", 22, "distance to the trail's line"),
+        **_segment_distance("d_back", 21),
+        **_segment_distance("d_ahead", 21),
+        "d_i_back": math("SUBTRACT", 20, "the point before", b=1.0),
+        "d_i_ahead": math("ADD", 20, "the point after", b=1.0),
+        "d_back_end": _clamped_sample("FLOAT_VECTOR", 21, "the point before it"),
+        "d_ahead_end": _clamped_sample("FLOAT_VECTOR", 21, "the point after it"),
+    }
+    links = (
         ("clock:Seconds", "t_age:#0"),
         ("t_time:Attribute", "t_age:#1"),
         ("input:Drift", "drift:#0"),
@@ -1363,6 +1476,37 @@ def _foam_nodes():
         *_segment_links("d_ahead", "d_at_position:Value", "d_ahead_end:Value"),
         ("d_back_dist:Value", "d_distance:#0"),
         ("d_ahead_dist:Value", "d_distance:#1"),
+    )
+    return nodes, links
+
+
+def _trail_foam_nodes():
+    """The trail's foam (its width, shape and fading) and the foam stored: this wake's or any before's."""
+    nodes = {
+        "f_time": _named("wake_time", "FLOAT", 17, "when each was"),
+        "f_speed": _named("wake_speed", "FLOAT", 17, "its speed then"),
+        "d_age": math("SUBTRACT", 18, "each track point's age"),
+        "d_spread": math("MULTIPLY", 23, "0.1 m/s x age", b=0.1),
+        "third_beam": math("MULTIPLY", 23, "B / 3", b=1.0 / 3.0),
+        "d_width": math("ADD", 24, "B / 3 + spread"),
+        "d_ratio": math("DIVIDE", 25, "in widths"),
+        "d_ratio2": math("MULTIPLY", 26, "²"),
+        "d_gauss": math("MULTIPLY", 27, "-", b=-1.0),
+        "d_shape": math("EXPONENT", 28, "across the trail"),
+        "d_age_s": math("DIVIDE", 23, "age / Foam Fade"),
+        "d_age_n": math("MULTIPLY", 24, "-", b=-1.0),
+        "d_fade": math("EXPONENT", 25, "fading"),
+        "d_moving": math("MULTIPLY", 24, "moving then", b=1.0),
+        "d_moving_c": Node("ShaderNodeClamp", 25, label="0..1"),
+        "d_f1": math("MULTIPLY", 26, "fading x moving then"),
+        "trail_foam_full": math("MULTIPLY", 27, "x 0.7: thinner than at the hull", b=0.7),
+        "trail_foam": math("MULTIPLY", 31, "foam along the track"),
+        "foam_here": math("MAXIMUM", 32, "this wake's foam"),
+        "foam_before": _named(FOAM_ATTRIBUTE, "FLOAT", 32, "foam of wakes before"),
+        "foam": math("MAXIMUM", 33, "any wake's foam"),
+        "store_foam": _store(FOAM_ATTRIBUTE, "FLOAT", 50),
+    }
+    links = (
         ("clock:Seconds", "d_age:#0"),
         ("f_time:Attribute", "d_age:#1"),
         ("d_age:Value", "d_spread:#0"),
@@ -1399,13 +1543,14 @@ def _foam_nodes():
     return nodes, links
 
 
-def _zone_nodes():
-    """Where the wake is worked out. A box round the track, its drift and the rings picks the
-    points looked at (two compares a point over the whole water); on those alone, the zone: within
-    the Kelvin wedge round the chord from the object back to the track's oldest point (wider by
-    how far the track strays from the chord and by how much longer it is), or in the rings' box
-    (1); near the trail too (2). It is stored once (`wake_zone`), read by the height and the foam,
-    and removed: the nearest-point searches, the costly part, run only inside it."""
+def _foam_nodes():
+    """Foam round the hull as it moves, and along its track, drifting, spreading and fading."""
+    nodes, links = _merge(_hull_foam_nodes(), _trail_line_nodes(), _trail_foam_nodes())
+    return nodes, tuple(links)
+
+
+def _zone_chord_nodes():
+    """The track's ends: which is the newest, the oldest point, and the chord back to it from the object."""
     nodes = {
         "z_position": Node("GeometryNodeInputPosition", 38),
         "z_p_flat": vmath("MULTIPLY", 39, "on the plane", b=(1.0, 1.0, 0.0)),
@@ -1427,96 +1572,6 @@ def _zone_nodes():
         "chord": vmath("SUBTRACT", 43, "chord: back to the oldest"),
         "chord_len": vmath("LENGTH", 44, "chord's length"),
         "chord_dir": vmath("NORMALIZE", 44, "chord's direction"),
-        # On the track and its drifted copy: how far they stray from the chord, and its span.
-        "k_v": vmath("SUBTRACT", 45, "each point - the object"),
-        "k_s": vmath("DOT_PRODUCT", 46, "along the chord"),
-        "k_cross": vmath("CROSS_PRODUCT", 46, "across"),
-        "k_d": vmath("LENGTH", 47, "off the chord"),
-        "dev": Node("GeometryNodeAttributeStatistic", 48, {"domain": "POINT"}, label="strays at most"),
-        "span": Node("GeometryNodeAttributeStatistic", 48, {"domain": "POINT"}, label="span along it"),
-        "arc_extra": math("SUBTRACT", 45, "track's length - chord's"),
-        "arc_extra_p": math("MAXIMUM", 46, "(> 0)", b=0.0),
-        "beam_spread": math("ADD", 45, "beam + spread + 2 m"),
-        "w0": math("MULTIPLY_ADD", 47, "strays + the extra length's wedge", b=KELVIN_TAN),
-        "w1": math("ADD", 48, "the wedge's width at the object"),
-        "ahead": math("MULTIPLY_ADD", 47, "L / 2 + beam + spread + 2 m", b=0.5),
-        "s_lo": math("SUBTRACT", 49, "from ahead of the bow"),
-        "s_hi": math("ADD", 49, "to past the oldest"),
-        # A bent track's first arms reach past its oldest point along the chord (its heading
-        # there turned from the chord's): by as much as it strays.
-        "s_hi_bent": math("ADD", 50, "and its arms, bent"),
-        # The trail's foam, 0.7 exp(-age / Foam Fade) exp(-(d / w)²) with w = B / 3 + 0.1 m/s x
-        # age, is above 0.005 within 0.73 B + 0.42 m/s x Foam Fade of its line (at most, over its
-        # ages), and only while younger than ln(140) = 4.94 Foam Fades; the hull's within 0.75 B.
-        "foam_m": math("MULTIPLY_ADD", 46, "trail's reach: 0.42 m/s x Foam Fade + 1 m", b=0.42, c=1.0),
-        "foam_b": math("MULTIPLY", 46, "0.75 B", b=0.75),
-        "foam_mb": math("ADD", 47, "+ 0.75 B"),
-        "fb_oldest_t": _sample("FLOAT", 46, "the oldest point's time"),
-        "fb_duration": math("SUBTRACT", 47, "the track's seconds"),
-        "fb_duration_e": math("MAXIMUM", 48, "(> 0)", b=1e-3),
-        "fb_ages": math("MULTIPLY", 47, "the foam's life: 4.94 Foam Fades", b=4.94),
-        "fb_share": math("DIVIDE", 49, "its share of the track", clamp=True),
-        "fb_len": math("MULTIPLY", 50, "as much of its length"),
-        "fb_reach": math("ADD", 51, "from ahead of the bow"),
-        "z_young": math("LESS_THAN", 54, "where the foam is young enough"),
-        "z_band_young": math("MULTIPLY", 55, "near the trail, young"),
-        "foam_w": math("ADD", 48, "+ strays: the trail's band"),
-        # The box round the zone: its wedge's four corners (ahead of the bow and past the
-        # oldest point, each side of the chord) and a square round the object (a chord of no
-        # length: a hull standing still).
-        "tz_n": vmath("CROSS_PRODUCT", 50, "across the chord", b=(0.0, 0.0, 1.0)),
-        "tz_far_w": math("MULTIPLY_ADD", 50, "the wedge's width past the oldest", b=KELVIN_ZONE_TAN),
-        "tz_c_lo": vmath("SCALE", 51, "to ahead of the bow"),
-        "tz_c_hi": vmath("SCALE", 51, "to past the oldest"),
-        "tz_n_near": vmath("SCALE", 51, "half the width there"),
-        "tz_n_far": vmath("SCALE", 51, "half the width there"),
-        "tz_lo_at": vmath("ADD", 52, "ahead of the bow"),
-        "tz_hi_at": vmath("ADD", 52, "past the oldest"),
-        "tz_p1": vmath("ADD", 53, "corner"),
-        "tz_p2": vmath("SUBTRACT", 53, "corner"),
-        "tz_p3": vmath("ADD", 53, "corner"),
-        "tz_p4": vmath("SUBTRACT", 53, "corner"),
-        "tz_r": math("ADD", 52, "round the object"),
-        "tz_sq_lo": vmath("SUBTRACT", 53, "square's low corner"),
-        "tz_sq_hi": vmath("ADD", 53, "square's high corner"),
-        "tz_min_a": vmath("MINIMUM", 54, ""),
-        "tz_min_b": vmath("MINIMUM", 54, ""),
-        "tz_min_c": vmath("MINIMUM", 55, ""),
-        "tz_low": vmath("MINIMUM", 56, "the box: low"),
-        "tz_max_a": vmath("MAXIMUM", 54, ""),
-        "tz_max_b": vmath("MAXIMUM", 54, ""),
-        "tz_max_c": vmath("MAXIMUM", 55, ""),
-        "tz_high": vmath("MAXIMUM", 56, "the box: high"),
-        # Each point in the box.
-        "z_v": vmath("SUBTRACT", 50, "p - the object"),
-        "z_s": vmath("DOT_PRODUCT", 51, "along the chord"),
-        "z_cross": vmath("CROSS_PRODUCT", 51, "across"),
-        "z_d": vmath("LENGTH", 52, "off the chord"),
-        "z_sc": math("MAXIMUM", 52, "behind (> 0)", b=0.0),
-        # tan 20.8°: the arms' Airy tail fades a little beyond 19.47°.
-        "z_w": math("MULTIPLY_ADD", 53, "the wedge's width here", b=KELVIN_ZONE_TAN),
-        "z_in_w": math("LESS_THAN", 54, "within it"),
-        "z_after": math("GREATER_THAN", 54, "not ahead of the bow"),
-        "z_before": math("LESS_THAN", 54, "not past the oldest"),
-        "z_k1": math("MULTIPLY", 55, ""),
-        "z_kelvin": math("MULTIPLY", 56, "in the wedge"),
-        **_box_test(("r_above", "r_below", "r_in"), 53, "the rings' box"),
-        "z_waves": math("MAXIMUM", 57, "waves here: 1"),
-        "z_band": math("LESS_THAN", 54, "near the trail"),
-        "z_foam": math("MULTIPLY", 57, "foam here: 1 more"),
-        "zone": math("ADD", 58, "zone: 0, 1 or 2"),
-        "all_low": vmath("MINIMUM", 57, "both boxes: low"),
-        "all_high": vmath("MAXIMUM", 57, "both boxes: high"),
-        "low_split": Node("ShaderNodeSeparateXYZ", 57, label="low"),
-        "high_split": Node("ShaderNodeSeparateXYZ", 57, label="high"),
-        "low_xy": Node("ShaderNodeCombineXYZ", 58, values={"Z": -1e9}, label="low, any height"),
-        "high_xy": Node("ShaderNodeCombineXYZ", 58, values={"Z": 1e9}, label="high, any height"),
-        **_box_test(("above_low", "below_high", "near_track"), 58, "the box"),
-        "store_zone": _store("wake_zone", "FLOAT", 59),
-        "zone_read": _named("wake_zone", "FLOAT", 59, "the zone"),
-        "in_wake": math("GREATER_THAN", 60, "waves here", b=0.5),
-        "in_foam": math("GREATER_THAN", 60, "foam here", b=1.5),
-        "drop_zone": Node("GeometryNodeRemoveAttribute", 62, values={"Name": "wake_zone"}, label="zone gone"),
     }
     links = (
         ("sim_out:Track", "t_count:Geometry"),
@@ -1540,6 +1595,37 @@ def _zone_nodes():
         ("sim_out:Last", "chord:#1"),
         ("chord:Vector", "chord_len:#0"),
         ("chord:Vector", "chord_dir:#0"),
+        ("sim_out:Track", "kept:Geometry"),
+        ("drifted:Geometry", "kept:Geometry"),
+        ("input:Foam Fade", "spread_far:#0"),
+        ("z_position:Position", "z_p_flat:#0"),
+    )
+    return nodes, links
+
+
+def _zone_wedge_nodes():
+    """How far the track and its drift stray from the chord: the wedge's width at the object and its span."""
+    nodes = {
+        # On the track and its drifted copy: how far they stray from the chord, and its span.
+        "k_v": vmath("SUBTRACT", 45, "each point - the object"),
+        "k_s": vmath("DOT_PRODUCT", 46, "along the chord"),
+        "k_cross": vmath("CROSS_PRODUCT", 46, "across"),
+        "k_d": vmath("LENGTH", 47, "off the chord"),
+        "dev": Node("GeometryNodeAttributeStatistic", 48, {"domain": "POINT"}, label="strays at most"),
+        "span": Node("GeometryNodeAttributeStatistic", 48, {"domain": "POINT"}, label="span along it"),
+        "arc_extra": math("SUBTRACT", 45, "track's length - chord's"),
+        "arc_extra_p": math("MAXIMUM", 46, "(> 0)", b=0.0),
+        "beam_spread": math("ADD", 45, "beam + spread + 2 m"),
+        "w0": math("MULTIPLY_ADD", 47, "strays + the extra length's wedge", b=KELVIN_TAN),
+        "w1": math("ADD", 48, "the wedge's width at the object"),
+        "ahead": math("MULTIPLY_ADD", 47, "L / 2 + beam + spread + 2 m", b=0.5),
+        "s_lo": math("SUBTRACT", 49, "from ahead of the bow"),
+        "s_hi": math("ADD", 49, "to past the oldest"),
+        # A bent track's first arms reach past its oldest point along the chord (its heading
+        # there turned from the chord's): by as much as it strays.
+        "s_hi_bent": math("ADD", 50, "and its arms, bent"),
+    }
+    links = (
         ("z_t_position:Position", "k_v:#0"),
         ("sim_out:Last", "k_v:#1"),
         ("k_v:Vector", "k_s:#0"),
@@ -1566,6 +1652,33 @@ def _zone_nodes():
         ("ahead:Value", "s_lo:#1"),
         ("span:Max", "s_hi:#0"),
         ("beam_spread:Value", "s_hi:#1"),
+        ("s_hi:Value", "s_hi_bent:#0"),
+        ("w0:Value", "s_hi_bent:#1"),
+    )
+    return nodes, links
+
+
+def _zone_band_nodes():
+    """The trail foam's band: how far across its line and how far along the track the foam reaches."""
+    nodes = {
+        # The trail's foam, 0.7 exp(-age / Foam Fade) exp(-(d / w)²) with w = B / 3 + 0.1 m/s x
+        # age, is above 0.005 within 0.73 B + 0.42 m/s x Foam Fade of its line (at most, over its
+        # ages), and only while younger than ln(140) = 4.94 Foam Fades; the hull's within 0.75 B.
+        "foam_m": math("MULTIPLY_ADD", 46, "trail's reach: 0.42 m/s x Foam Fade + 1 m", b=0.42, c=1.0),
+        "foam_b": math("MULTIPLY", 46, "0.75 B", b=0.75),
+        "foam_mb": math("ADD", 47, "+ 0.75 B"),
+        "fb_oldest_t": _sample("FLOAT", 46, "the oldest point's time"),
+        "fb_duration": math("SUBTRACT", 47, "the track's seconds"),
+        "fb_duration_e": math("MAXIMUM", 48, "(> 0)", b=1e-3),
+        "fb_ages": math("MULTIPLY", 47, "the foam's life: 4.94 Foam Fades", b=4.94),
+        "fb_share": math("DIVIDE", 49, "its share of the track", clamp=True),
+        "fb_len": math("MULTIPLY", 50, "as much of its length"),
+        "fb_reach": math("ADD", 51, "from ahead of the bow"),
+        "z_young": math("LESS_THAN", 54, "where the foam is young enough"),
+        "z_band_young": math("MULTIPLY", 55, "near the trail, young"),
+        "foam_w": math("ADD", 48, "+ strays: the trail's band"),
+    }
+    links = (
         ("input:Foam Fade", "foam_m:#0"),
         ("foam_m:Value", "foam_mb:#0"),
         ("input:Beam", "foam_b:#0"),
@@ -1589,21 +1702,30 @@ def _zone_nodes():
         ("z_young:Value", "z_band_young:#1"),
         ("foam_mb:Value", "foam_w:#0"),
         ("dev:Max", "foam_w:#1"),
-        ("z_p_flat:Vector", "z_v:#0"),
-        ("sim_out:Last", "z_v:#1"),
-        ("z_v:Vector", "z_s:#0"),
-        ("chord_dir:Vector", "z_s:#1"),
-        ("z_v:Vector", "z_cross:#0"),
-        ("chord_dir:Vector", "z_cross:#1"),
-        ("z_cross:Vector", "z_d:#0"),
-        ("z_s:Value", "z_sc:#0"),
-        ("z_sc:Value", "z_w:#0"),
-        ("w1:Value", "z_w:#2"),
-        ("z_d:Value", "z_in_w:#0"),
-        ("z_w:Value", "z_in_w:#1"),
-        ("z_s:Value", "z_after:#0"),
-        ("s_lo:Value", "z_after:#1"),
-        ("z_s:Value", "z_before:#0"),
+    )
+    return nodes, links
+
+
+def _zone_corner_nodes():
+    """The box round the zone's wedge: its four corners, ahead of the bow and past the oldest point."""
+    nodes = {
+        # The box round the zone: its wedge's four corners (ahead of the bow and past the
+        # oldest point, each side of the chord) and a square round the object (a chord of no
+        # length: a hull standing still).
+        "tz_n": vmath("CROSS_PRODUCT", 50, "across the chord", b=(0.0, 0.0, 1.0)),
+        "tz_far_w": math("MULTIPLY_ADD", 50, "the wedge's width past the oldest", b=KELVIN_ZONE_TAN),
+        "tz_c_lo": vmath("SCALE", 51, "to ahead of the bow"),
+        "tz_c_hi": vmath("SCALE", 51, "to past the oldest"),
+        "tz_n_near": vmath("SCALE", 51, "half the width there"),
+        "tz_n_far": vmath("SCALE", 51, "half the width there"),
+        "tz_lo_at": vmath("ADD", 52, "ahead of the bow"),
+        "tz_hi_at": vmath("ADD", 52, "past the oldest"),
+        "tz_p1": vmath("ADD", 53, "corner"),
+        "tz_p2": vmath("SUBTRACT", 53, "corner"),
+        "tz_p3": vmath("ADD", 53, "corner"),
+        "tz_p4": vmath("SUBTRACT", 53, "corner"),
+    }
+    links = (
         ("chord_dir:Vector", "tz_n:#0"),
         ("s_hi_bent:Value", "tz_far_w:#0"),
         ("w1:Value", "tz_far_w:#2"),
@@ -1627,6 +1749,26 @@ def _zone_nodes():
         ("tz_n_far:Vector", "tz_p3:#1"),
         ("tz_hi_at:Vector", "tz_p4:#0"),
         ("tz_n_far:Vector", "tz_p4:#1"),
+    )
+    return nodes, links
+
+
+def _zone_box_nodes():
+    """The box round the zone: round its wedge's corners and a square round the object (a still hull)."""
+    nodes = {
+        "tz_r": math("ADD", 52, "round the object"),
+        "tz_sq_lo": vmath("SUBTRACT", 53, "square's low corner"),
+        "tz_sq_hi": vmath("ADD", 53, "square's high corner"),
+        "tz_min_a": vmath("MINIMUM", 54, ""),
+        "tz_min_b": vmath("MINIMUM", 54, ""),
+        "tz_min_c": vmath("MINIMUM", 55, ""),
+        "tz_low": vmath("MINIMUM", 56, "the box: low"),
+        "tz_max_a": vmath("MAXIMUM", 54, ""),
+        "tz_max_b": vmath("MAXIMUM", 54, ""),
+        "tz_max_c": vmath("MAXIMUM", 55, ""),
+        "tz_high": vmath("MAXIMUM", 56, "the box: high"),
+    }
+    links = (
         ("ahead:Value", "tz_r:#0"),
         ("w1:Value", "tz_r:#1"),
         ("sim_out:Last", "tz_sq_lo:#0"),
@@ -1649,8 +1791,48 @@ def _zone_nodes():
         ("tz_max_b:Vector", "tz_max_c:#1"),
         ("tz_max_c:Vector", "tz_high:#0"),
         ("tz_sq_hi:Vector", "tz_high:#1"),
-        ("s_hi:Value", "s_hi_bent:#0"),
-        ("w0:Value", "s_hi_bent:#1"),
+    )
+    return nodes, links
+
+
+def _zone_point_nodes():
+    """Each point's zone: 1 in the wedge or the rings' box, 2 near the trail too."""
+    nodes = {
+        # Each point in the box.
+        "z_v": vmath("SUBTRACT", 50, "p - the object"),
+        "z_s": vmath("DOT_PRODUCT", 51, "along the chord"),
+        "z_cross": vmath("CROSS_PRODUCT", 51, "across"),
+        "z_d": vmath("LENGTH", 52, "off the chord"),
+        "z_sc": math("MAXIMUM", 52, "behind (> 0)", b=0.0),
+        # tan 20.8°: the arms' Airy tail fades a little beyond 19.47°.
+        "z_w": math("MULTIPLY_ADD", 53, "the wedge's width here", b=KELVIN_ZONE_TAN),
+        "z_in_w": math("LESS_THAN", 54, "within it"),
+        "z_after": math("GREATER_THAN", 54, "not ahead of the bow"),
+        "z_before": math("LESS_THAN", 54, "not past the oldest"),
+        "z_k1": math("MULTIPLY", 55, ""),
+        "z_kelvin": math("MULTIPLY", 56, "in the wedge"),
+        **_box_test(("r_above", "r_below", "r_in"), 53, "the rings' box"),
+        "z_waves": math("MAXIMUM", 57, "waves here: 1"),
+        "z_band": math("LESS_THAN", 54, "near the trail"),
+        "z_foam": math("MULTIPLY", 57, "foam here: 1 more"),
+        "zone": math("ADD", 58, "zone: 0, 1 or 2"),
+    }
+    links = (
+        ("z_p_flat:Vector", "z_v:#0"),
+        ("sim_out:Last", "z_v:#1"),
+        ("z_v:Vector", "z_s:#0"),
+        ("chord_dir:Vector", "z_s:#1"),
+        ("z_v:Vector", "z_cross:#0"),
+        ("chord_dir:Vector", "z_cross:#1"),
+        ("z_cross:Vector", "z_d:#0"),
+        ("z_s:Value", "z_sc:#0"),
+        ("z_sc:Value", "z_w:#0"),
+        ("w1:Value", "z_w:#2"),
+        ("z_d:Value", "z_in_w:#0"),
+        ("z_w:Value", "z_in_w:#1"),
+        ("z_s:Value", "z_after:#0"),
+        ("s_lo:Value", "z_after:#1"),
+        ("z_s:Value", "z_before:#0"),
         ("s_hi_bent:Value", "z_before:#1"),
         ("z_in_w:Value", "z_k1:#0"),
         ("z_after:Value", "z_k1:#1"),
@@ -1670,10 +1852,27 @@ def _zone_nodes():
         ("z_kelvin:Value", "z_foam:#1"),
         ("z_waves:Value", "zone:#0"),
         ("z_foam:Value", "zone:#1"),
-        ("sim_out:Track", "kept:Geometry"),
-        ("drifted:Geometry", "kept:Geometry"),
-        ("input:Foam Fade", "spread_far:#0"),
-        ("z_position:Position", "z_p_flat:#0"),
+    )
+    return nodes, links
+
+
+def _zone_store_nodes():
+    """The zone stored on the points in either box (two compares a point), and its readers."""
+    nodes = {
+        "all_low": vmath("MINIMUM", 57, "both boxes: low"),
+        "all_high": vmath("MAXIMUM", 57, "both boxes: high"),
+        "low_split": Node("ShaderNodeSeparateXYZ", 57, label="low"),
+        "high_split": Node("ShaderNodeSeparateXYZ", 57, label="high"),
+        "low_xy": Node("ShaderNodeCombineXYZ", 58, values={"Z": -1e9}, label="low, any height"),
+        "high_xy": Node("ShaderNodeCombineXYZ", 58, values={"Z": 1e9}, label="high, any height"),
+        **_box_test(("above_low", "below_high", "near_track"), 58, "the box"),
+        "store_zone": _store("wake_zone", "FLOAT", 59),
+        "zone_read": _named("wake_zone", "FLOAT", 59, "the zone"),
+        "in_wake": math("GREATER_THAN", 60, "waves here", b=0.5),
+        "in_foam": math("GREATER_THAN", 60, "foam here", b=1.5),
+        "drop_zone": Node("GeometryNodeRemoveAttribute", 62, values={"Name": "wake_zone"}, label="zone gone"),
+    }
+    links = (
         ("tz_low:Vector", "all_low:#0"),
         ("ring_low:Vector", "all_low:#1"),
         ("tz_high:Vector", "all_high:#0"),
@@ -1697,6 +1896,25 @@ def _zone_nodes():
         ("zone_read:Attribute", "in_foam:#0"),
     )
     return nodes, links
+
+
+def _zone_nodes():
+    """Where the wake is worked out. A box round the track, its drift and the rings picks the
+    points looked at (two compares a point over the whole water); on those alone, the zone: within
+    the Kelvin wedge round the chord from the object back to the track's oldest point (wider by
+    how far the track strays from the chord and by how much longer it is), or in the rings' box
+    (1); near the trail too (2). It is stored once (`wake_zone`), read by the height and the foam,
+    and removed: the nearest-point searches, the costly part, run only inside it."""
+    nodes, links = _merge(
+        _zone_chord_nodes(),
+        _zone_wedge_nodes(),
+        _zone_band_nodes(),
+        _zone_corner_nodes(),
+        _zone_box_nodes(),
+        _zone_point_nodes(),
+        _zone_store_nodes(),
+    )
+    return nodes, tuple(links)
 
 
 # The inputs in metres (and g), read through the water's scale: the group works in the water's
@@ -1754,29 +1972,103 @@ def _units_nodes():
     return nodes, links
 
 
+# The group's inputs: lengths in metres (read in the water's units, `_units_nodes`), times in seconds.
+INPUTS = (
+    Socket("Geometry", "NodeSocketGeometry"),
+    Socket(
+        "Source",
+        "NodeSocketObject",
+        tooltip="The object that leaves the wake (a floating one: its rig's anchor)",
+    ),
+    Socket(
+        "Length",
+        "NodeSocketFloat",
+        10.0,
+        0.01,
+        1000.0,
+        "DISTANCE",
+        "The hull's length at the waterline",
+    ),
+    Socket("Beam", "NodeSocketFloat", 3.0, 0.01, 500.0, "DISTANCE", "The hull's width at the waterline"),
+    Socket("Draft", "NodeSocketFloat", 0.5, 0.0, 100.0, "DISTANCE", "How deep the hull sits"),
+    Socket(
+        "Depth",
+        "NodeSocketFloat",
+        DEPTH_DEFAULT,
+        0.1,
+        10000.0,
+        "DISTANCE",
+        "The water's depth under the hull: a hull sitting deep in shallow water makes higher waves",
+    ),
+    Socket(
+        "Strength",
+        "NodeSocketFloat",
+        1.0,
+        0.0,
+        10.0,
+        tooltip="Wake height x Kriebel and Seelig's (their β): 1 for a bow half the hull long, "
+        "about 1.6 a third, 4 a quarter",
+    ),
+    Socket(
+        "Detail",
+        "NodeSocketFloat",
+        0.25,
+        0.001,
+        100.0,
+        "DISTANCE",
+        "The water mesh's cell: waves shorter than four are left out",
+    ),
+    Socket("Keep", "NodeSocketFloat", 30.0, 0.1, 600.0, None, "Seconds of track kept (the wake's length)"),
+    Socket(
+        "Fade",
+        "NodeSocketFloat",
+        20.0,
+        0.1,
+        600.0,
+        None,
+        "Seconds over which the waves fade to a third",
+    ),
+    Socket(
+        "Drift",
+        "NodeSocketVector",
+        (0.0, 0.0, 0.0),
+        subtype="VELOCITY",
+        tooltip="How the foam drifts, metres a second (downwind)",
+    ),
+    Socket(
+        "Foam Fade",
+        "NodeSocketFloat",
+        6.0,
+        0.1,
+        600.0,
+        None,
+        "Seconds over which the foam fades to a third",
+    ),
+    Socket(
+        "Shading Normal",
+        "NodeSocketBool",
+        False,
+        tooltip=f"Also tilt the '{SHADING_NORMAL}' the shading reads (the seeds' ocean: its waves' "
+        "own normal) by the wake, so the wake's waves show in its light",
+    ),
+)
+
+
 def _spec():
-    nodes, links = {}, []
-    for part in (
-        _track_nodes,
-        _ring_nodes,
-        _frame_nodes,
-        _kelvin_nodes,
-        _height_nodes,
-        _normal_nodes,
-        _foam_nodes,
-        _zone_nodes,
-        _walks,
-    ):
-        more_nodes, more_links = part()
-        assert not set(more_nodes) & set(nodes), set(more_nodes) & set(nodes)  # one key, one node
-        nodes |= more_nodes
-        links += more_links
+    nodes, links = _merge(
+        _track_nodes(),
+        _ring_nodes(),
+        _frame_nodes(),
+        _kelvin_nodes(),
+        _height_nodes(),
+        _normal_nodes(),
+        _foam_nodes(),
+        _zone_nodes(),
+        _walks(),
+    )
     links = [(IN_UNITS.get(source, source), target) for source, target in links]
     links += [("g_u:Value", socket) for socket in G_SOCKETS]
-    more_nodes, more_links = _units_nodes()
-    assert not set(more_nodes) & set(nodes), set(more_nodes) & set(nodes)
-    nodes |= more_nodes
-    links += more_links
+    nodes, links = _merge((nodes, links), _units_nodes())
     nodes, links, height = nest(
         nodes, links, _height_nodes()[0], HEIGHT_INTERFACE, ("height_group", 30), *HEIGHT_CROSSINGS
     )
@@ -1796,89 +2088,7 @@ def _spec():
         description="The Kelvin wake, rings and foam of one moving object (its track kept by a "
         "simulation zone)",
         tree_type="GeometryNodeTree",
-        inputs=(
-            Socket("Geometry", "NodeSocketGeometry"),
-            Socket(
-                "Source",
-                "NodeSocketObject",
-                tooltip="The object that leaves the wake (a floating one: its rig's anchor)",
-            ),
-            Socket(
-                "Length",
-                "NodeSocketFloat",
-                10.0,
-                0.01,
-                1000.0,
-                "DISTANCE",
-                "The hull's length at the waterline",
-            ),
-            Socket(
-                "Beam", "NodeSocketFloat", 3.0, 0.01, 500.0, "DISTANCE", "The hull's width at the waterline"
-            ),
-            Socket("Draft", "NodeSocketFloat", 0.5, 0.0, 100.0, "DISTANCE", "How deep the hull sits"),
-            Socket(
-                "Depth",
-                "NodeSocketFloat",
-                DEPTH_DEFAULT,
-                0.1,
-                10000.0,
-                "DISTANCE",
-                "The water's depth under the hull: a hull sitting deep in shallow water makes higher waves",
-            ),
-            Socket(
-                "Strength",
-                "NodeSocketFloat",
-                1.0,
-                0.0,
-                10.0,
-                tooltip="Wake height x Kriebel and Seelig's (their β): 1 for a bow half the hull long, "
-                "about 1.6 a third, 4 a quarter",
-            ),
-            Socket(
-                "Detail",
-                "NodeSocketFloat",
-                0.25,
-                0.001,
-                100.0,
-                "DISTANCE",
-                "The water mesh's cell: waves shorter than four are left out",
-            ),
-            Socket(
-                "Keep", "NodeSocketFloat", 30.0, 0.1, 600.0, None, "Seconds of track kept (the wake's length)"
-            ),
-            Socket(
-                "Fade",
-                "NodeSocketFloat",
-                20.0,
-                0.1,
-                600.0,
-                None,
-                "Seconds over which the waves fade to a third",
-            ),
-            Socket(
-                "Drift",
-                "NodeSocketVector",
-                (0.0, 0.0, 0.0),
-                subtype="VELOCITY",
-                tooltip="How the foam drifts, metres a second (downwind)",
-            ),
-            Socket(
-                "Foam Fade",
-                "NodeSocketFloat",
-                6.0,
-                0.1,
-                600.0,
-                None,
-                "Seconds over which the foam fades to a third",
-            ),
-            Socket(
-                "Shading Normal",
-                "NodeSocketBool",
-                False,
-                tooltip=f"Also tilt the '{SHADING_NORMAL}' the shading reads (the seeds' ocean: its waves' "
-                "own normal) by the wake, so the wake's waves show in its light",
-            ),
-        ),
+        inputs=INPUTS,
         outputs=(Socket("Geometry", "NodeSocketGeometry"),),
         nodes=nodes,
         links=tuple(links),
