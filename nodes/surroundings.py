@@ -153,7 +153,8 @@ def _crossing(prefix, column, height_1, height_2, label):
     return nodes, links, f"{c}_cross:Boolean", f"{c}_at:Vector"
 
 
-def _build():
+def _surroundings_nodes():
+    """Step 0: the surroundings in the water's space, realized, mirrored objects' faces flipped back."""
     nodes = {
         # The surroundings, in the water's object space, and the water's own scale.
         "collection": Node(
@@ -190,6 +191,29 @@ def _build():
             label="mirrored",
         ),
         "unflip": Node("GeometryNodeFlipFaces", 8, label="surroundings mesh, normals out"),
+    }
+    links = [
+        ("input:Surroundings", "collection:Collection"),
+        ("transform:Transform", "axis_x:Transform"),
+        ("transform:Transform", "axis_y:Transform"),
+        ("transform:Transform", "axis_z:Transform"),
+        ("axis_x:Direction", "x_cross_y:#0"),
+        ("axis_y:Direction", "x_cross_y:#1"),
+        ("x_cross_y:Vector", "det:#0"),
+        ("axis_z:Direction", "det:#1"),
+        ("det:Value", "is_mirrored:#0"),
+        ("collection:Instances", "mark_mirrored:Geometry"),
+        ("is_mirrored:Result", "mark_mirrored:Value"),
+        ("mark_mirrored:Geometry", "realize:Geometry"),
+        ("realize:Geometry", "unflip:Mesh"),
+        ("mirrored:Attribute", "unflip:Selection"),
+    ]
+    return nodes, links
+
+
+def _raycast_nodes():
+    """Step 1: the water's scale, the two raycasts, and the signed height h kept for the steps after."""
+    nodes = {
         "self_info": Node(
             "GeometryNodeObjectInfo", 2, {"transform_space": "ORIGINAL"}, label="water transform"
         ),
@@ -215,6 +239,40 @@ def _build():
             {"Name": HEIGHT_ATTRIBUTE},
             label="h",
         ),
+    }
+    links = [
+        ("self:Self Object", "self_info:Object"),
+        ("self_info:Scale", "scale_abs:#0"),
+        ("scale_abs:Vector", "scale_xyz:Vector"),
+        # 1.
+        ("unflip:Mesh", "down:Target Geometry"),
+        ("position:Position", "down:Source Position"),
+        ("unflip:Mesh", "up:Target Geometry"),
+        ("position:Position", "up:Source Position"),
+        ("up:Hit Normal", "up_normal:Vector"),
+        ("up_normal:Z", "backface:#0"),
+        ("up:Is Hit", "dry:#0"),
+        ("backface:Result", "dry:#1"),
+        ("down:Hit Distance", "depth_m:#0"),
+        ("scale_xyz:Z", "depth_m:#1"),
+        ("depth_m:Value", "depth_cap:#0"),
+        ("down:Is Hit", "depth:Switch"),
+        ("depth_cap:Value", "depth:True"),
+        ("up:Hit Distance", "above_m:#0"),
+        ("scale_xyz:Z", "above_m:#1"),
+        ("above_m:Value", "above:#0"),
+        ("dry:Boolean", "h:Switch"),
+        ("depth:Output", "h:False"),
+        ("above:Value", "h:True"),
+        ("input:Geometry", "store_h:Geometry"),
+        ("h:Output", "store_h:Value"),
+    ]
+    return nodes, links
+
+
+def _waterline_nodes():
+    """Step 2: the waterline's samples, on the grid's wet-to-dry edges and the surroundings' at z = 0."""
+    nodes = {
         # 2a. Waterline on the water grid's edges (h read at both ends).
         "grid_ends": Node("GeometryNodeInputMeshEdgeVertices", 17, label="grid edge ends"),
         "grid_h1": Node("GeometryNodeSampleIndex", 18, {"data_type": "FLOAT", "domain": "POINT"}, label="h1"),
@@ -225,6 +283,27 @@ def _build():
         "sur_z1": Node("ShaderNodeSeparateXYZ", 18, label="z1"),
         "sur_z2": Node("ShaderNodeSeparateXYZ", 18, label="z2"),
         "sur_points": Node("GeometryNodeMeshToPoints", 22, {"mode": "EDGES"}, label="surroundings waterline"),
+    }
+    links = [
+        # 2a.
+        ("store_h:Geometry", "grid_h1:Geometry"),
+        ("h_read:Attribute", "grid_h1:Value"),
+        ("grid_ends:Vertex Index 1", "grid_h1:Index"),
+        ("store_h:Geometry", "grid_h2:Geometry"),
+        ("h_read:Attribute", "grid_h2:Value"),
+        ("grid_ends:Vertex Index 2", "grid_h2:Index"),
+        ("store_h:Geometry", "grid_points:Mesh"),
+        # 2b.
+        ("sur_ends:Position 1", "sur_z1:Vector"),
+        ("sur_ends:Position 2", "sur_z2:Vector"),
+        ("unflip:Mesh", "sur_points:Mesh"),
+    ]
+    return nodes, links
+
+
+def _shore_nodes():
+    """Step 3: the shore distance to the nearest sample, then the depth and the flag, stored."""
+    nodes = {
         # 3. Shore distance.
         "samples": Node("GeometryNodeJoinGeometry", 23, label="waterline samples"),
         "flat": vmath("MULTIPLY", 23, "(x, y, 0)", b=(1.0, 1.0, 0.0)),
@@ -247,6 +326,40 @@ def _build():
             {"Name": FLAG_ATTRIBUTE, "Value": 1.0},
             label=f"store '{FLAG_ATTRIBUTE}' = 1",
         ),
+    }
+    links = [
+        # 3.
+        ("grid_points:Points", "samples:Geometry"),
+        ("sur_points:Points", "samples:Geometry"),
+        ("position:Position", "flat:#0"),
+        ("samples:Geometry", "flatten:Geometry"),
+        ("flat:Vector", "flatten:Position"),
+        ("flatten:Geometry", "nearest:Target"),
+        ("flat:Vector", "nearest:Source Position"),
+        ("nearest:Position", "offset:#0"),
+        ("flat:Vector", "offset:#1"),
+        ("offset:Vector", "offset_m:#0"),
+        ("scale_abs:Vector", "offset_m:#1"),
+        ("offset_m:Vector", "distance:#0"),
+        ("distance:Value", "distance_cap:#0"),
+        ("nearest:Is Valid", "shore_or_far:Switch"),
+        ("distance_cap:Value", "shore_or_far:True"),
+        ("h_read:Attribute", "is_dry:#0"),
+        ("is_dry:Result", "shore:Switch"),
+        ("shore_or_far:Output", "shore:False"),
+        ("store_h:Geometry", "store_shore:Geometry"),
+        ("shore:Output", "store_shore:Value"),
+        ("h_read:Attribute", "depth_final:#0"),
+        ("store_shore:Geometry", "store_depth:Geometry"),
+        ("depth_final:Value", "store_depth:Value"),
+        ("store_depth:Geometry", "store_flag:Geometry"),
+    ]
+    return nodes, links
+
+
+def _floor_nodes():
+    """Steps 4 and 5, for the sample group: the floor's height under each point and metres per UV unit."""
+    nodes = {
         # 4. For the sample group: the floor's height under each point, in object units.
         "p_xyz": Node("ShaderNodeSeparateXYZ", 30, label="p"),
         "h_units": math("DIVIDE", 31, "h in object units"),
@@ -279,82 +392,6 @@ def _build():
         "store_uv_size": _store(CACHE_UV_SIZE_ATTRIBUTE, 36, f"store '{CACHE_UV_SIZE_ATTRIBUTE}'"),
     }
     links = [
-        ("input:Surroundings", "collection:Collection"),
-        ("transform:Transform", "axis_x:Transform"),
-        ("transform:Transform", "axis_y:Transform"),
-        ("transform:Transform", "axis_z:Transform"),
-        ("axis_x:Direction", "x_cross_y:#0"),
-        ("axis_y:Direction", "x_cross_y:#1"),
-        ("x_cross_y:Vector", "det:#0"),
-        ("axis_z:Direction", "det:#1"),
-        ("det:Value", "is_mirrored:#0"),
-        ("collection:Instances", "mark_mirrored:Geometry"),
-        ("is_mirrored:Result", "mark_mirrored:Value"),
-        ("mark_mirrored:Geometry", "realize:Geometry"),
-        ("realize:Geometry", "unflip:Mesh"),
-        ("mirrored:Attribute", "unflip:Selection"),
-        ("self:Self Object", "self_info:Object"),
-        ("self_info:Scale", "scale_abs:#0"),
-        ("scale_abs:Vector", "scale_xyz:Vector"),
-        # 1.
-        ("unflip:Mesh", "down:Target Geometry"),
-        ("position:Position", "down:Source Position"),
-        ("unflip:Mesh", "up:Target Geometry"),
-        ("position:Position", "up:Source Position"),
-        ("up:Hit Normal", "up_normal:Vector"),
-        ("up_normal:Z", "backface:#0"),
-        ("up:Is Hit", "dry:#0"),
-        ("backface:Result", "dry:#1"),
-        ("down:Hit Distance", "depth_m:#0"),
-        ("scale_xyz:Z", "depth_m:#1"),
-        ("depth_m:Value", "depth_cap:#0"),
-        ("down:Is Hit", "depth:Switch"),
-        ("depth_cap:Value", "depth:True"),
-        ("up:Hit Distance", "above_m:#0"),
-        ("scale_xyz:Z", "above_m:#1"),
-        ("above_m:Value", "above:#0"),
-        ("dry:Boolean", "h:Switch"),
-        ("depth:Output", "h:False"),
-        ("above:Value", "h:True"),
-        ("input:Geometry", "store_h:Geometry"),
-        ("h:Output", "store_h:Value"),
-        # 2a.
-        ("store_h:Geometry", "grid_h1:Geometry"),
-        ("h_read:Attribute", "grid_h1:Value"),
-        ("grid_ends:Vertex Index 1", "grid_h1:Index"),
-        ("store_h:Geometry", "grid_h2:Geometry"),
-        ("h_read:Attribute", "grid_h2:Value"),
-        ("grid_ends:Vertex Index 2", "grid_h2:Index"),
-        ("store_h:Geometry", "grid_points:Mesh"),
-        # 2b.
-        ("sur_ends:Position 1", "sur_z1:Vector"),
-        ("sur_ends:Position 2", "sur_z2:Vector"),
-        ("unflip:Mesh", "sur_points:Mesh"),
-        # 3.
-        ("grid_points:Points", "samples:Geometry"),
-        ("sur_points:Points", "samples:Geometry"),
-        ("position:Position", "flat:#0"),
-        ("samples:Geometry", "flatten:Geometry"),
-        ("flat:Vector", "flatten:Position"),
-        ("flatten:Geometry", "nearest:Target"),
-        ("flat:Vector", "nearest:Source Position"),
-        ("nearest:Position", "offset:#0"),
-        ("flat:Vector", "offset:#1"),
-        ("offset:Vector", "offset_m:#0"),
-        ("scale_abs:Vector", "offset_m:#1"),
-        ("offset_m:Vector", "distance:#0"),
-        ("distance:Value", "distance_cap:#0"),
-        ("nearest:Is Valid", "shore_or_far:Switch"),
-        ("distance_cap:Value", "shore_or_far:True"),
-        ("h_read:Attribute", "is_dry:#0"),
-        ("is_dry:Result", "shore:Switch"),
-        ("shore_or_far:Output", "shore:False"),
-        ("store_h:Geometry", "store_shore:Geometry"),
-        ("shore:Output", "store_shore:Value"),
-        ("h_read:Attribute", "depth_final:#0"),
-        ("store_shore:Geometry", "store_depth:Geometry"),
-        ("depth_final:Value", "store_depth:Value"),
-        ("store_depth:Geometry", "store_flag:Geometry"),
         ("position:Position", "p_xyz:Vector"),
         ("h_read:Attribute", "h_units:#0"),
         ("scale_xyz:Z", "h_units:#1"),
@@ -381,6 +418,21 @@ def _build():
         ("per_uv:Value", "store_uv_size:Value"),
         ("store_uv_size:Geometry", "output:Geometry"),
     ]
+    return nodes, links
+
+
+def _build():
+    """`Water Surroundings`' nodes and links: the steps of the module's Method, in order."""
+    nodes, links = {}, []
+    for more_nodes, more_links in (
+        _surroundings_nodes(),
+        _raycast_nodes(),
+        _waterline_nodes(),
+        _shore_nodes(),
+        _floor_nodes(),
+    ):
+        assert not set(more_nodes) & set(nodes), set(more_nodes) & set(nodes)  # one key, one node
+        nodes, links = nodes | more_nodes, links + list(more_links)
     for prefix, height_1, height_2, points, label in (
         ("grid", "grid_h1:Value", "grid_h2:Value", "grid_points", "wet to dry"),
         ("sur", "sur_z1:Z", "sur_z2:Z", "sur_points", "crosses z = 0"),
@@ -424,7 +476,8 @@ def _read(name, column, label):
     return Node("GeometryNodeInputNamedAttribute", column, {"data_type": "FLOAT"}, {"Name": name}, label)
 
 
-def _build_sample():
+def _sample_input_nodes():
+    """What the sample group reads: the cache (transform, attributes), the water's transform, both counts."""
     nodes = {
         "cache": Node(
             "GeometryNodeObjectInfo", 1, {"transform_space": "ORIGINAL"}, label="cache (water space)"
@@ -446,6 +499,22 @@ def _build_sample():
         "water_count": Node(
             "GeometryNodeAttributeDomainSize", 2, {"component": "MESH"}, label="water points"
         ),
+    }
+    links = [
+        ("input:Cache", "cache:Object"),
+        ("self:Self Object", "self_info:Object"),
+        ("position:Position", "now_xyz:Vector"),
+        ("cache:Scale", "scale_abs:#0"),
+        ("scale_abs:Vector", "scale_xyz:Vector"),
+        ("cache:Geometry", "cache_count:Geometry"),
+        ("input:Geometry", "water_count:Geometry"),
+    ]
+    return nodes, links
+
+
+def _sample_valid_nodes():
+    """The cache's floor and shore distance at each point, and whether the cache is valid for this water."""
+    nodes = {
         "floor": _sample("FLOAT", 3, "floor z at i"),
         "shore": _sample("FLOAT", 3, "shore distance at i"),
         "flag": _sample("FLOAT", 3, "flag at point 0: one value"),
@@ -462,30 +531,8 @@ def _build_sample():
         "has_flag": _compare("GREATER_THAN", 4, "cache measured", b=0.5),
         "valid_1": Node("FunctionNodeBooleanMath", 5, {"operation": "AND"}, label="valid"),
         "valid": Node("FunctionNodeBooleanMath", 7, {"operation": "AND"}, label="valid"),
-        "above_floor": math("SUBTRACT", 4, "z now - floor z"),
-        "depth_m": math("MULTIPLY", 5, "in metres"),
-        "wet": math("MAXIMUM", 6, "at least 0", b=0.0),
-        "capped": math("MINIMUM", 7, f"at most {FAR:g}", b=FAR),
-        "depth_valid": _switch(9, f"depth, {FAR:g} without a cache", false=FAR),
-        "shore_valid": _switch(9, f"shore distance, {FAR:g} without a cache", false=FAR),
-        "flag_valid": _switch(9, "flag: 1, 0 without a cache", false=0.0, true=1.0),
-        "store_depth": _store(DEPTH_ATTRIBUTE, 10, f"store '{DEPTH_ATTRIBUTE}'"),
-        "store_shore": _store(SHORE_ATTRIBUTE, 11, f"store '{SHORE_ATTRIBUTE}'"),
-        "store_flag": _store(FLAG_ATTRIBUTE, 12, f"store '{FLAG_ATTRIBUTE}'"),
-        # Metres per UV unit, so the shader turns metres into UV: measured by the cache (the
-        # two groups are built together), one value, read at point 0.
-        "uv_size_read": _read(CACHE_UV_SIZE_ATTRIBUTE, 2, "metres per UV unit (cache)"),
-        "uv_size": _sample("FLOAT", 3, "at point 0: one value"),
-        "store_uv_size": _store(UV_SIZE_ATTRIBUTE, 13, f"store '{UV_SIZE_ATTRIBUTE}'"),
     }
     links = [
-        ("input:Cache", "cache:Object"),
-        ("self:Self Object", "self_info:Object"),
-        ("position:Position", "now_xyz:Vector"),
-        ("cache:Scale", "scale_abs:#0"),
-        ("scale_abs:Vector", "scale_xyz:Vector"),
-        ("cache:Geometry", "cache_count:Geometry"),
-        ("input:Geometry", "water_count:Geometry"),
         ("cache_count:Point Count", "same_count:#0"),
         ("water_count:Point Count", "same_count:#1"),
         ("cache:Location", "moved_location:#0"),
@@ -514,7 +561,29 @@ def _build_sample():
             (field, f"{key}:Value"),
             ("index:Index", f"{key}:Index"),
         ]
-    links += [
+    return nodes, links
+
+
+def _sample_store_nodes():
+    """The depth from the floor to where the waves lift the point, FAR without a valid cache; stored."""
+    nodes = {
+        "above_floor": math("SUBTRACT", 4, "z now - floor z"),
+        "depth_m": math("MULTIPLY", 5, "in metres"),
+        "wet": math("MAXIMUM", 6, "at least 0", b=0.0),
+        "capped": math("MINIMUM", 7, f"at most {FAR:g}", b=FAR),
+        "depth_valid": _switch(9, f"depth, {FAR:g} without a cache", false=FAR),
+        "shore_valid": _switch(9, f"shore distance, {FAR:g} without a cache", false=FAR),
+        "flag_valid": _switch(9, "flag: 1, 0 without a cache", false=0.0, true=1.0),
+        "store_depth": _store(DEPTH_ATTRIBUTE, 10, f"store '{DEPTH_ATTRIBUTE}'"),
+        "store_shore": _store(SHORE_ATTRIBUTE, 11, f"store '{SHORE_ATTRIBUTE}'"),
+        "store_flag": _store(FLAG_ATTRIBUTE, 12, f"store '{FLAG_ATTRIBUTE}'"),
+        # Metres per UV unit, so the shader turns metres into UV: measured by the cache (the
+        # two groups are built together), one value, read at point 0.
+        "uv_size_read": _read(CACHE_UV_SIZE_ATTRIBUTE, 2, "metres per UV unit (cache)"),
+        "uv_size": _sample("FLOAT", 3, "at point 0: one value"),
+        "store_uv_size": _store(UV_SIZE_ATTRIBUTE, 13, f"store '{UV_SIZE_ATTRIBUTE}'"),
+    }
+    links = [
         ("now_xyz:Z", "above_floor:#0"),
         ("floor:Value", "above_floor:#1"),
         ("above_floor:Value", "depth_m:#0"),
@@ -538,6 +607,15 @@ def _build_sample():
         ("uv_size:Value", "store_uv_size:Value"),
         ("store_uv_size:Geometry", "output:Geometry"),
     ]
+    return nodes, links
+
+
+def _build_sample():
+    """`Water Surroundings Sample`'s nodes and links: the cache read point by point, if valid."""
+    nodes, links = {}, []
+    for more_nodes, more_links in (_sample_input_nodes(), _sample_valid_nodes(), _sample_store_nodes()):
+        assert not set(more_nodes) & set(nodes), set(more_nodes) & set(nodes)  # one key, one node
+        nodes, links = nodes | more_nodes, links + list(more_links)
     return nodes, tuple(links)
 
 
