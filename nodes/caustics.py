@@ -91,7 +91,8 @@ def feed(node, vector):
     return ((vector, f"{node}:Vector"), *pass_inputs(node, [socket.name for socket in INPUTS[1:]]))
 
 
-def _nodes():
+def _view_nodes():
+    """The view ray, refracted into the water and down to the bed (its depth capped for the offset)."""
     eta = 1.0 / IOR
     nodes = {
         "geometry": Node("ShaderNodeNewGeometry", 1),
@@ -106,6 +107,28 @@ def _nodes():
         "d_near": math("MINIMUM", 2, f"min(d, {OFFSET_DEPTH:g} m)", b=OFFSET_DEPTH),
         "along_v": math("DIVIDE", 7, "d / cos_v"),
         "to_bed": vmath("SCALE", 8, "to the bed"),
+    }
+    links = [
+        ("geometry:Incoming", "view:#0"),
+        ("view:Vector", "r_v:#0"),
+        ("geometry:True Normal", "r_v:#1"),
+        ("r_v:Vector", "cos_v_raw:#0"),
+        ("geometry:True Normal", "cos_v_raw:#1"),
+        ("cos_v_raw:Value", "cos_v:#0"),
+        ("cos_v:Value", "cos_v_safe:#0"),
+        ("depth:Fac", "d_near:#0"),
+        ("d_near:Value", "along_v:#0"),
+        ("cos_v_safe:Value", "along_v:#1"),
+        ("r_v:Vector", "to_bed:#0"),
+        ("along_v:Value", "to_bed:Scale"),
+    ]
+    return nodes, links
+
+
+def _sun_nodes():
+    """The sunlight, refracted in, and back up from the bed to where it came through: the offset in UV."""
+    eta = 1.0 / IOR
+    nodes = {
         # The sunlight, into the water; back up from the bed to where it came through.
         "sun": vmath("NORMALIZE", 2, "L"),
         "r_s": vmath("REFRACT", 3, f"r_s = refract(L, N, 1/{IOR})", scale=eta),
@@ -134,6 +157,39 @@ def _nodes():
         ),
         "per_uv": math("DIVIDE", 11, "1 / water_uv_size (0 without)", a=1.0),
         "offset_uv": vmath("SCALE", 12, "in UV"),
+    }
+    links = [
+        ("input:Sun Direction", "sun:#0"),
+        ("sun:Vector", "r_s:#0"),
+        ("geometry:True Normal", "r_s:#1"),
+        ("sun:Vector", "sun_up_raw:#0"),
+        ("geometry:True Normal", "sun_up_raw:#1"),
+        ("sun_up_raw:Value", "sun_up:#0"),
+        ("sun_up:Value", "sun_on:Value"),
+        ("r_s:Vector", "cos_s_raw:#0"),
+        ("geometry:True Normal", "cos_s_raw:#1"),
+        ("cos_s_raw:Value", "cos_s:#0"),
+        ("cos_s:Value", "cos_s_safe:#0"),
+        ("d_near:Value", "along_s:#0"),
+        ("cos_s_safe:Value", "along_s:#1"),
+        ("depth:Fac", "sun_path:#0"),
+        ("cos_s_safe:Value", "sun_path:#1"),
+        ("along_s:Value", "back_s:#0"),
+        ("r_s:Vector", "from_sun:#0"),
+        ("back_s:Value", "from_sun:Scale"),
+        ("to_bed:Vector", "offset:#0"),
+        ("from_sun:Vector", "offset:#1"),
+        ("offset:Vector", "offset_object:Vector"),
+        ("uv_size:Fac", "per_uv:#1"),
+        ("offset_object:Vector", "offset_uv:#0"),
+        ("per_uv:Value", "offset_uv:Scale"),
+    ]
+    return nodes, links
+
+
+def _tile_nodes():
+    """The offset in the bump's wind frame and tiling, and the caustic tile read there."""
+    nodes = {
         # Into the bump's wind frame and tiling, as `Water Surface Bump UV` does.
         "frame": group_node(wind_frame.NAME, 11),
         "du": vmath("DOT_PRODUCT", 13, "offset . p"),
@@ -160,6 +216,33 @@ def _nodes():
         "c_minus_1": math(
             "MULTIPLY_ADD", 19, f"c - 1 = tile x {caustics_map.PEAK:g} - 1", b=caustics_map.PEAK, c=-1.0
         ),
+    }
+    links = [
+        ("input:Wind Direction", "frame:Wind Direction"),
+        ("offset_uv:Vector", "du:#0"),
+        ("frame:Across", "du:#1"),
+        ("offset_uv:Vector", "dv:#0"),
+        ("frame:Wind", "dv:#1"),
+        ("du:Value", "duv:X"),
+        ("dv:Value", "duv:Y"),
+        ("input:Wave Length", "per_length:#1"),
+        ("duv:Vector", "duv_tiled:#0"),
+        ("per_length:Value", "duv_tiled:Scale"),
+        ("input:Vector", "at:#0"),
+        ("duv_tiled:Vector", "at:#1"),
+        ("input:Caustics Scale", "scale_safe:Value"),
+        ("scale_safe:Result", "per_scale:#1"),
+        ("at:Vector", "scaled:#0"),
+        ("per_scale:Value", "scaled:Scale"),
+        ("scaled:Vector", "tile:Vector"),
+        ("tile:Color", "c_minus_1:#0"),
+    ]
+    return nodes, links
+
+
+def _contrast_nodes():
+    """The contrast (faded in and out with depth, x the sun's height, its T per channel) and the factor."""
+    nodes = {
         # The contrast: fades in over the first FADE_IN m, out with depth, and with the sun's T.
         "fade_in": Node(
             "ShaderNodeMapRange",
@@ -189,60 +272,6 @@ def _nodes():
         "factor": vmath("MAXIMUM", 21, "at least 0", b=(0.0, 0.0, 0.0)),
     }
     links = [
-        ("geometry:Incoming", "view:#0"),
-        ("view:Vector", "r_v:#0"),
-        ("geometry:True Normal", "r_v:#1"),
-        ("r_v:Vector", "cos_v_raw:#0"),
-        ("geometry:True Normal", "cos_v_raw:#1"),
-        ("cos_v_raw:Value", "cos_v:#0"),
-        ("cos_v:Value", "cos_v_safe:#0"),
-        ("depth:Fac", "d_near:#0"),
-        ("d_near:Value", "along_v:#0"),
-        ("cos_v_safe:Value", "along_v:#1"),
-        ("r_v:Vector", "to_bed:#0"),
-        ("along_v:Value", "to_bed:Scale"),
-        ("input:Sun Direction", "sun:#0"),
-        ("sun:Vector", "r_s:#0"),
-        ("geometry:True Normal", "r_s:#1"),
-        ("sun:Vector", "sun_up_raw:#0"),
-        ("geometry:True Normal", "sun_up_raw:#1"),
-        ("sun_up_raw:Value", "sun_up:#0"),
-        ("sun_up:Value", "sun_on:Value"),
-        ("r_s:Vector", "cos_s_raw:#0"),
-        ("geometry:True Normal", "cos_s_raw:#1"),
-        ("cos_s_raw:Value", "cos_s:#0"),
-        ("cos_s:Value", "cos_s_safe:#0"),
-        ("d_near:Value", "along_s:#0"),
-        ("cos_s_safe:Value", "along_s:#1"),
-        ("depth:Fac", "sun_path:#0"),
-        ("cos_s_safe:Value", "sun_path:#1"),
-        ("along_s:Value", "back_s:#0"),
-        ("r_s:Vector", "from_sun:#0"),
-        ("back_s:Value", "from_sun:Scale"),
-        ("to_bed:Vector", "offset:#0"),
-        ("from_sun:Vector", "offset:#1"),
-        ("offset:Vector", "offset_object:Vector"),
-        ("uv_size:Fac", "per_uv:#1"),
-        ("offset_object:Vector", "offset_uv:#0"),
-        ("per_uv:Value", "offset_uv:Scale"),
-        ("input:Wind Direction", "frame:Wind Direction"),
-        ("offset_uv:Vector", "du:#0"),
-        ("frame:Across", "du:#1"),
-        ("offset_uv:Vector", "dv:#0"),
-        ("frame:Wind", "dv:#1"),
-        ("du:Value", "duv:X"),
-        ("dv:Value", "duv:Y"),
-        ("input:Wave Length", "per_length:#1"),
-        ("duv:Vector", "duv_tiled:#0"),
-        ("per_length:Value", "duv_tiled:Scale"),
-        ("input:Vector", "at:#0"),
-        ("duv_tiled:Vector", "at:#1"),
-        ("input:Caustics Scale", "scale_safe:Value"),
-        ("scale_safe:Result", "per_scale:#1"),
-        ("at:Vector", "scaled:#0"),
-        ("per_scale:Value", "scaled:Scale"),
-        ("scaled:Vector", "tile:Vector"),
-        ("tile:Color", "c_minus_1:#0"),
         ("depth:Fac", "fade_in:Value"),
         ("depth:Fac", "fade_out:#1"),
         ("input:Caustics", "strength:Value"),
@@ -268,6 +297,15 @@ def _nodes():
         ("factor_raw:Vector", "factor:#0"),
         ("factor:Vector", "output:Factor"),
     ]
+    return nodes, links
+
+
+def _nodes():
+    """The caustics' nodes and links: the ray to the bed, the sunlight back up, the tile read there."""
+    nodes, links = {}, []
+    for more_nodes, more_links in (_view_nodes(), _sun_nodes(), _tile_nodes(), _contrast_nodes()):
+        assert not set(more_nodes) & set(nodes), set(more_nodes) & set(nodes)  # one key, one node
+        nodes, links = nodes | more_nodes, links + list(more_links)
     return nodes, tuple(links)
 
 
