@@ -277,29 +277,9 @@ def _layer_nodes():
     return nodes, links
 
 
-def _weight_nodes():
-    """The closure weights and the emission colour for the final picture and each debug view.
-
-    Final: with foam coverage `c`, glossy `(1 - c)(1 - Dull Blend)(1 - F)`, refraction
-    `(1 - c)(1 - Dull Blend) F` times the transmittance `T`, emission
-    `(1 - c)(Dull Blend * Dull Color + glint)` plus the scattered light
-    `Scatter Color (1 - T)` at the refraction's weight, and the foam's white diffuse at `c`.
-    View 1 or 2: that closure at weight 1 alone (view 2 with its `T` and scatter, so the
-    final picture stays the composition of the views). Views 3-7: only the emission,
-    showing F, the normal colour, the glint, `T` or `c`. Any other number shows the final picture.
-    """
-    nodes, links = {}, []
-    previous = None
-    for number in range(1, len(DEBUG_VIEWS)):
-        nodes[f"is_{number}"] = math("COMPARE", 17, f"view == {number}", b=float(number), c=0.5)
-        links.append(("input:Debug View", f"is_{number}:#0"))
-        if previous is not None:
-            nodes[f"any_{number}"] = math("ADD", 18, "a debug view")
-            links += [(previous, f"any_{number}:#0"), (f"is_{number}:Value", f"any_{number}:#1")]
-            previous = f"any_{number}:Value"
-        else:
-            previous = "is_1:Value"
-    nodes |= {
+def _final_weight_nodes(any_view):
+    """From above: the reflection and refraction weights of the final picture (or views 1, 2 alone)."""
+    nodes = {
         "is_final": math("SUBTRACT", 19, "final view", a=1.0),
         "foam_clear": math("SUBTRACT", 19, "1 - foam", a=1.0),
         "clear": math("SUBTRACT", 19, "1 - Dull Blend", a=1.0),
@@ -311,35 +291,9 @@ def _weight_nodes():
         "w_refract": math("MULTIPLY_ADD", 22, "refraction weight"),
         "through": vmath("MULTIPLY", 22, "T x caustics"),
         "refract_color": vmath("SCALE", 23, "T x caustics x refraction weight"),
-        "dull_part": vmath("SCALE", 19, "Dull Blend x Dull Color"),
-        "lit": vmath("ADD", 20, "+ glint"),
-        "e_final": vmath("SCALE", 22, "if final, x (1 - foam)"),
-        "e_f": vmath("MULTIPLY_ADD", 23, "+ F if view 3"),
-        "e_n": vmath("MULTIPLY_ADD", 23, "+ normal if view 4"),
-        "e_glint": vmath("MULTIPLY_ADD", 23, "+ glint if view 5"),
-        "e_scatter": vmath("MULTIPLY_ADD", 24, "+ scatter x refraction weight"),
-        "e_transmit": vmath("MULTIPLY_ADD", 24, "+ T if view 6"),
-        "e_foam": vmath("MULTIPLY_ADD", 24, "+ foam if view 7"),
-        "e_caustics": vmath("MULTIPLY_ADD", 25, "+ caustics if view 8"),
-        # From below (a backface): physics alone. The Fresnel node takes 1 / IOR on a backface
-        # and gives 1 past the critical angle (total internal reflection), so the refraction shows
-        # the sky inside Snell's window and the reflection the water below outside it; no dull
-        # colour, glint or colour by depth (they are the view from above).
-        "fresnel_in": Node("ShaderNodeFresnel", 21, values={"IOR": IOR}, label="Fresnel from below"),
-        "under_reflect": math("MULTIPLY", 22, "from below: reflection"),
-        "under_clear": math("SUBTRACT", 22, "1 - that", a=1.0),
-        "under_refract": math("MULTIPLY", 23, "from below: refraction"),
-        "w_reflect_s": Node(
-            "ShaderNodeMix", 24, {"data_type": "FLOAT"}, label="reflection weight, either side"
-        ),
-        "refract_s": Node(
-            "ShaderNodeMix", 24, {"data_type": "VECTOR"}, label="refraction colour, either side"
-        ),
-        "above": math("SUBTRACT", 25, "1 on the top side", a=1.0),
-        "e_above": vmath("SCALE", 26, "emission from above only"),
     }
-    links += [
-        (previous, "is_final:#1"),
+    links = [
+        (any_view, "is_final:#1"),
         ("foam:Coverage", "foam_clear:#1"),
         ("input:Dull Blend", "clear:#1"),
         ("is_final:Value", "final_share:#0"),
@@ -359,6 +313,25 @@ def _weight_nodes():
         ("caustics:Factor", "through:#1"),
         ("through:Vector", "refract_color:#0"),
         ("w_refract:Value", "refract_color:Scale"),
+    ]
+    return nodes, links
+
+
+def _emission_nodes():
+    """The emission: the dull colour and glint of the final picture, or what debug views 3-8 show."""
+    nodes = {
+        "dull_part": vmath("SCALE", 19, "Dull Blend x Dull Color"),
+        "lit": vmath("ADD", 20, "+ glint"),
+        "e_final": vmath("SCALE", 22, "if final, x (1 - foam)"),
+        "e_f": vmath("MULTIPLY_ADD", 23, "+ F if view 3"),
+        "e_n": vmath("MULTIPLY_ADD", 23, "+ normal if view 4"),
+        "e_glint": vmath("MULTIPLY_ADD", 23, "+ glint if view 5"),
+        "e_scatter": vmath("MULTIPLY_ADD", 24, "+ scatter x refraction weight"),
+        "e_transmit": vmath("MULTIPLY_ADD", 24, "+ T if view 6"),
+        "e_foam": vmath("MULTIPLY_ADD", 24, "+ foam if view 7"),
+        "e_caustics": vmath("MULTIPLY_ADD", 25, "+ caustics if view 8"),
+    }
+    links = [
         ("input:Dull Color", "dull_part:#0"),
         ("input:Dull Blend", "dull_part:Scale"),
         ("dull_part:Vector", "lit:#0"),
@@ -386,6 +359,31 @@ def _weight_nodes():
         ("caustics:Factor", "e_caustics:#0"),
         ("is_8:Value", "e_caustics:#1"),
         ("e_foam:Vector", "e_caustics:#2"),
+    ]
+    return nodes, links
+
+
+def _underside_nodes():
+    """From below (a backface): Fresnel alone sets the weights, and no emission; either side picked."""
+    nodes = {
+        # From below (a backface): physics alone. The Fresnel node takes 1 / IOR on a backface
+        # and gives 1 past the critical angle (total internal reflection), so the refraction shows
+        # the sky inside Snell's window and the reflection the water below outside it; no dull
+        # colour, glint or colour by depth (they are the view from above).
+        "fresnel_in": Node("ShaderNodeFresnel", 21, values={"IOR": IOR}, label="Fresnel from below"),
+        "under_reflect": math("MULTIPLY", 22, "from below: reflection"),
+        "under_clear": math("SUBTRACT", 22, "1 - that", a=1.0),
+        "under_refract": math("MULTIPLY", 23, "from below: refraction"),
+        "w_reflect_s": Node(
+            "ShaderNodeMix", 24, {"data_type": "FLOAT"}, label="reflection weight, either side"
+        ),
+        "refract_s": Node(
+            "ShaderNodeMix", 24, {"data_type": "VECTOR"}, label="refraction colour, either side"
+        ),
+        "above": math("SUBTRACT", 25, "1 on the top side", a=1.0),
+        "e_above": vmath("SCALE", 26, "emission from above only"),
+    }
+    links = [
         ("normal_h:Normal", "fresnel_in:Normal"),
         ("fresnel_in:Fac", "under_reflect:#0"),
         ("final_share:Value", "under_reflect:#1"),
@@ -402,6 +400,35 @@ def _weight_nodes():
         ("e_caustics:Vector", "e_above:#0"),
         ("above:Value", "e_above:Scale"),
     ]
+    return nodes, links
+
+
+def _weight_nodes():
+    """The closure weights and the emission colour for the final picture and each debug view.
+
+    Final: with foam coverage `c`, glossy `(1 - c)(1 - Dull Blend)(1 - F)`, refraction
+    `(1 - c)(1 - Dull Blend) F` times the transmittance `T`, emission
+    `(1 - c)(Dull Blend * Dull Color + glint)` plus the scattered light
+    `Scatter Color (1 - T)` at the refraction's weight, and the foam's white diffuse at `c`.
+    View 1 or 2: that closure at weight 1 alone (view 2 with its `T` and scatter, so the
+    final picture stays the composition of the views). Views 3-7: only the emission,
+    showing F, the normal colour, the glint, `T` or `c`. Any other number shows the final picture.
+    """
+    # Which debug view: a compare a number, and whether any is (the final picture where none is).
+    nodes, links = {}, []
+    previous = None
+    for number in range(1, len(DEBUG_VIEWS)):
+        nodes[f"is_{number}"] = math("COMPARE", 17, f"view == {number}", b=float(number), c=0.5)
+        links.append(("input:Debug View", f"is_{number}:#0"))
+        if previous is not None:
+            nodes[f"any_{number}"] = math("ADD", 18, "a debug view")
+            links += [(previous, f"any_{number}:#0"), (f"is_{number}:Value", f"any_{number}:#1")]
+            previous = f"any_{number}:Value"
+        else:
+            previous = "is_1:Value"
+    for more_nodes, more_links in (_final_weight_nodes(previous), _emission_nodes(), _underside_nodes()):
+        assert not set(more_nodes) & set(nodes), set(more_nodes) & set(nodes)  # one key, one node
+        nodes, links = nodes | more_nodes, links + list(more_links)
     return nodes, links
 
 
