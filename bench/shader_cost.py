@@ -13,13 +13,20 @@ the default lake's steady render at most 1.0x the Principled water (never above 
 `clear_lake` (every part on) at most 1.15x the default lake, `Bump
 Layers` 4 at most 1.1x `Bump Layers` 1, `tropical_shallows` at most 1.1x
 `lake`, `clear_lake` with its caustics at most 1.15x `clear_lake` with Caustics 0, compile at
-most 1.5x. With `--views`
+most 1.5x. With `--scene=shore` it measures the issue 41 scene instead: the default lake
+added by the API (mirror set-up, surroundings) over a sandy bed that rises through it, with
+four wooden posts standing in it and a sun 35° up, 320 x 180, 8 samples, against the same water
+object with a Principled BSDF water (targets: steady at most 1.05x, first render at most 1.3x).
+With `--views`
 it also renders each debug view of the lake, which shows where the time goes
 (a view keeps one closure or only the emission); `--only=clear_lake` keeps the Principled
 water and the rows naming `clear_lake`. Run with `tools/bench shader_cost`.
 """
 
+import math
+import os
 import statistics
+import subprocess
 import sys
 import tempfile
 import time
@@ -79,6 +86,124 @@ def water_with_surroundings(bpy, scene):
     changes = harness.addon("api").set_surroundings(plane, scene=scene)
     print("surroundings: " + ", ".join(changes), flush=True)
     return plane
+
+
+def _lit_material(bpy, name, colour, roughness=0.8):
+    material = bpy.data.materials.new(name)
+    if bpy.app.version < (5, 0, 0):
+        material.use_nodes = True
+    bsdf = material.node_tree.nodes["Principled BSDF"]
+    bsdf.inputs["Base Color"].default_value = (*colour, 1.0)
+    bsdf.inputs["Roughness"].default_value = roughness
+    return material
+
+
+def shore_scene(bpy):
+    """The issue 41 scene: a sandy bed rising through the water on one side, four posts standing
+    in it, a sun 35° up ahead of the camera, the default lake added by the API over them (so it
+    gathers them as its surroundings and gets the mirror set-up). Returns (scene, water)."""
+    scene = harness.clean_scene(width=320, height=180, samples=8)
+    harness.set_world_color(scene, (0.4, 0.6, 0.9))
+    sun = bpy.data.objects.new("Sun", bpy.data.lights.new("Sun", "SUN"))
+    sun.data.energy = 3.0
+    sun.rotation_euler = (math.radians(55.0), 0.0, math.radians(160.0))
+    scene.collection.objects.link(sun)
+    bed = harness.add_cube(
+        scene, (0.0, 0.0, -1.0), size=1.0, material=_lit_material(bpy, "Sand", (0.8, 0.7, 0.5))
+    )
+    bed.scale = (30.0, 30.0, 0.05)
+    bed.rotation_euler = (0.0, -0.12, 0.0)  # rises through the surface at about x = 8 m
+    wood = _lit_material(bpy, "Wood", (0.35, 0.22, 0.12))
+    for index, x in enumerate((-3.0, -1.0, 1.0, 3.0)):
+        post = harness.add_cube(scene, (x, 1.5, 0.0), size=1.0, material=wood, name=f"Post {index + 1}")
+        post.scale = (0.2, 0.2, 3.0)
+    harness.add_camera(scene, (0.0, -9.0, 3.0), (0.0, 2.0, 0.0))
+    water = harness.addon("api").add_water(scene, preset="lake", size=24.0, name="Lake").object
+    return scene, water
+
+
+def _time(scene, path):
+    start = time.perf_counter()
+    harness.render(scene, path)
+    return time.perf_counter() - start
+
+
+SHORE_MATERIALS = ("Principled BSDF water", "Water Surface (the default lake)")
+FIRST_ROUNDS = 3
+
+
+def _shore_materials(bpy, water):
+    return dict(zip(SHORE_MATERIALS, (principled_water(bpy), water.data.materials[0])))
+
+
+def first_shore(name):
+    """One material's first render in `shore_scene`, in a Blender of its own (so its shaders are
+    compiled anew, Mesa's disk cache off): printed as `FIRST <seconds>`."""
+    bpy = harness.start()
+    harness.install(harness.build_zip(tempfile.mkdtemp(prefix="water_surface_dist_")))
+    scene, water = shore_scene(bpy)
+    material = _shore_materials(bpy, water)[name]
+    out = tempfile.mkdtemp(prefix="water_surface_bench_")
+    water.data.materials[0] = harness.emission_material("Warm-up", (1, 1, 1))
+    harness.render(scene, f"{out}/warmup.png")  # compiles the world and the other objects once
+    water.data.materials[0] = material
+    print(f"FIRST {_time(scene, f'{out}/first.png'):.3f}", flush=True)
+    return 0
+
+
+def _first_in_own_process(name):
+    env = {**os.environ, "MESA_SHADER_CACHE_DISABLE": "true"}
+    done = subprocess.run(
+        [sys.executable, __file__, f"--first-of={name}"], env=env, capture_output=True, text=True, check=True
+    )
+    return float(next(line for line in done.stdout.splitlines() if line.startswith("FIRST ")).split()[1])
+
+
+def main_shore():
+    """The lake against a Principled water in `shore_scene`: first renders (each in a Blender of
+    its own, in interleaved rounds) and steady renders (best of interleaved rounds in one)."""
+    firsts = {name: [] for name in SHORE_MATERIALS}
+    for round_number in range(FIRST_ROUNDS):
+        for name in SHORE_MATERIALS:
+            firsts[name].append(_first_in_own_process(name))
+        print(f"first renders, round {round_number + 1}/{FIRST_ROUNDS}: {firsts}", flush=True)
+    bpy = harness.start()
+    harness.install(harness.build_zip(tempfile.mkdtemp(prefix="water_surface_dist_")))
+    scene, water = shore_scene(bpy)
+    materials = _shore_materials(bpy, water)
+    out = tempfile.mkdtemp(prefix="water_surface_bench_")
+    water.data.materials[0] = harness.emission_material("Warm-up", (1, 1, 1))
+    harness.render(scene, f"{out}/warmup.png")
+    steady = {name: [] for name in materials}
+    for round_number in range(STEADY_ROUNDS):
+        for name, material in materials.items():
+            water.data.materials[0] = material
+            harness.render(scene, f"{out}/switch.png")  # the switch's own update, not timed
+            steady[name].append(_time(scene, f"{out}/steady_{round_number}.png"))
+        print(f"round {round_number + 1}/{STEADY_ROUNDS} done", flush=True)
+    spread = max(statistics.median(times) / min(times) - 1.0 for times in steady.values())
+    print(f"\nBlender {bpy.app.version_string}, the shore scene, 320x180, 8 samples, screen-traced EEVEE")
+    print(
+        f"first = median of {FIRST_ROUNDS} interleaved rounds, each in a Blender of its own; steady = best "
+        f"of {STEADY_ROUNDS} interleaved rounds in one; largest median/best steady spread {spread:.0%}"
+    )
+    print(
+        "| material | first render s (median, range) | steady render s (best, median) "
+        "| first / Principled | steady / Principled |"
+    )
+    print("| --- | --- | --- | --- | --- |")
+    base, lake = SHORE_MATERIALS
+    first = {name: statistics.median(times) for name, times in firsts.items()}
+    for name in materials:
+        best, median = min(steady[name]), statistics.median(steady[name])
+        print(
+            f"| {name} | {first[name]:.2f} ({min(firsts[name]):.2f}-{max(firsts[name]):.2f}) | {best:.2f}, "
+            f"{median:.2f} | {first[name] / first[base]:.2f} | {best / min(steady[base]):.2f} |"
+        )
+    first_ratio, steady_ratio = first[lake] / first[base], min(steady[lake]) / min(steady[base])
+    print(f"steady: {steady_ratio:.2f} (target 1.05x): {'met' if steady_ratio <= 1.05 else 'NOT met'}")
+    print(f"first: {first_ratio:.2f} (target 1.3x): {'met' if first_ratio <= 1.3 else 'NOT met'}")
+    return 0
 
 
 def main(views=False, only=None):
@@ -185,4 +310,9 @@ def main(views=False, only=None):
 if __name__ == "__main__":
     # `--only=clear_lake`: the Principled water and the rows whose name holds the word.
     chosen = next((arg.split("=", 1)[1] for arg in sys.argv[1:] if arg.startswith("--only=")), None)
+    first_of = next((arg.split("=", 1)[1] for arg in sys.argv[1:] if arg.startswith("--first-of=")), None)
+    if first_of:
+        sys.exit(first_shore(first_of))
+    if "--scene=shore" in sys.argv[1:]:
+        sys.exit(main_shore())
     sys.exit(main(views="--views" in sys.argv[1:], only=chosen))
