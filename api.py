@@ -23,30 +23,30 @@ from . import presets as _presets
 from .presets import PresetError
 from .water import camera_clip as _camera_clip
 from .water import files as _files
-from .water import floating as _floating
-from .water import keep_out as _keep_out
 from .water import kind as _kind
 from .water import mirror as _mirror
-from .water import open_sea as _open_sea
 from .water import physical_caustics as _physical_caustics
 from .water import removal as _removal
 from .water import surroundings as _surroundings
 from .water import values as _values
-from .water import wake as _wake
 from .water import waves as _waves
+from .water.boats import floating as _floating
+from .water.boats import keep_out as _keep_out
+from .water.boats import wake as _wake
+from .water.boats.floating import FloatError
+from .water.boats.keep_out import KeepOutError
+from .water.boats.wake import WakeError
 from .water.editable import NotEditableError, check_editable
 from .water.files import FileJobError
-from .water.floating import FloatError
-from .water.keep_out import KeepOutError
 from .water.mirror import MirrorSetupError
-from .water.open_sea import OpenSeaError
 from .water.physical_caustics import PhysicalCausticsError
 from .water.plane import AddedWater, AddWaterError
 from .water.plane import add_water as _add_water
 from .water.removal import RemoveWaterError
 from .water.repair import needs_repair
+from .water.sea import open_sea as _open_sea
+from .water.sea.open_sea import OpenSeaError
 from .water.surroundings import SurroundingsError
-from .water.wake import WakeError
 
 __all__ = (
     "AddWaterError",

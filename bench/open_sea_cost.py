@@ -53,7 +53,7 @@ def ocean_alone(bpy, scene, sea_ocean, tile):
     obj = bpy.data.objects.new("Ocean Alone", mesh)
     scene.collection.objects.link(obj)
     modifier = obj.modifiers.new("Ocean", "OCEAN")
-    harness.addon("water.open_sea").copy_settings(sea_ocean, modifier)
+    harness.addon("water.sea.open_sea").copy_settings(sea_ocean, modifier)
     harness.addon("nodes.material").drive_clock(modifier, scene, prop="time")
     obj.data.materials.append(principled_water(bpy))
     return obj
@@ -124,7 +124,7 @@ def main():
     scene.collection.objects.link(sun)
     api = harness.addon("api")
     sea = api.add_water(scene, preset="open_sea", name="Open Sea").object
-    sea_ocean, _fade = harness.addon("water.open_sea").sea_modifiers(sea)
+    sea_ocean, _fade = harness.addon("water.sea.open_sea").sea_modifiers(sea)
     tile = sea_ocean.spatial_size
     seeds = api.add_water(
         scene, preset="ocean", size=float(tile), resolution=POINTS, name="Seeds Ocean"

@@ -68,7 +68,7 @@ def main():
     api.add_waves(lake)
     boat = hull(bpy, scene)
     api.add_wake_source(boat, lake)
-    wake = harness.addon("water.wake")
+    wake = harness.addon("water.boats.wake")
     waves = harness.addon("water.waves")
     (modifier,) = wake.wake_modifiers(lake)
     cases = ("the lake alone", "+ a hull's wake")

@@ -1,6 +1,6 @@
 """`Water Float Patch`: the piece of a water's evaluated surface round one floating object.
 
-A floating object's probes (`water/float_rig.py`) drop onto its patch instead of the whole water:
+A floating object's probes (`water/boats/float_rig.py`) drop onto its patch instead of the whole water:
 a Shrinkwrap constraint makes a ray-cast tree of its target's mesh every frame, 150,000 points on
 the open sea (about 90 ms, BENCHMARKS), a few hundred here. The patch object has the water's
 transform (Copy Transforms), so it works in the water's own space: the water's mesh as its

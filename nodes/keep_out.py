@@ -2,7 +2,7 @@
 
 The material gives it the point's position in the hull's own space (a Texture Coordinate node
 whose Object is the hull: it follows the hull's final transform, constraints and all, in EEVEE and
-Cycles, with no driver). The hull's dry mask (`water/dry_mask_math.py`, a packed image: one
+Cycles, with no driver). The hull's dry mask (`water/boats/dry_mask_math.py`, a packed image: one
 group per hull, found by its image) says whether that point lies within the hull's outline, and
 the hull's height range whether it lies between its keel and its top. Hulls chain: each takes
 the `Dry` of the one before and passes on the larger.

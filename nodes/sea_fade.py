@@ -1,6 +1,6 @@
 """`Water Sea Fade`: the open sea's Geometry Nodes step after Blender's Ocean modifier.
 
-The sea's mesh reaches the horizon with points ever further apart (`water/sea_mesh.py`). Far
+The sea's mesh reaches the horizon with points ever further apart (`water/sea/sea_mesh.py`). Far
 out, the Ocean modifier's waves, sampled that sparsely, would turn into noise, and its tile,
 seen many times across a row of pixels, into a visible repeat. So past `Fade Start` metres from
 the sea's centre the displacement fades, reaching none at `Fade End`: the points go back to

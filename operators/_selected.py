@@ -1,8 +1,8 @@
 """What the object operators (float, keep water out, wake) share: the selected objects that are
 not water, the water each one acts on, and one report for all of them."""
 
+from ..water.boats.floating import water_for
 from ..water.editable import NotEditableError
-from ..water.floating import water_for
 from ..water.values import is_water
 
 

@@ -2,7 +2,7 @@
 
 import bpy
 
-from ..water import floating
+from ..water.boats import floating
 from ..water.editable import why_not_editable
 from . import _poll
 from ._selected import not_water, run_on_selected, take_off_selected

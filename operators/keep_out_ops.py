@@ -3,7 +3,7 @@ water again."""
 
 import bpy
 
-from ..water import keep_out
+from ..water.boats import keep_out
 from . import _poll
 from ._selected import run_on_selected, take_off_selected
 

@@ -3,8 +3,8 @@
 import bpy
 
 from ..presets import PresetError
-from ..water import open_sea
 from ..water.editable import NotEditableError
+from ..water.sea import open_sea
 from . import _poll
 from ._props import add_field_properties
 

@@ -3,7 +3,7 @@ they move, or no longer."""
 
 import bpy
 
-from ..water import wake
+from ..water.boats import wake
 from ..water.editable import NotEditableError
 from . import _poll
 from ._selected import run_on_selected, take_off_selected

@@ -77,7 +77,7 @@ SHADING = Field(
     choices=("lake", "ocean"),
 )
 
-# The open sea (`water/open_sea.py`): Blender's Ocean modifier, set from these.
+# The open sea (`water/sea/open_sea.py`): Blender's Ocean modifier, set from these.
 SEA = Field(
     "sea",
     None,

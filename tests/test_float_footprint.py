@@ -54,7 +54,7 @@ def _sea(scene, period, wind_sea=False, wind=12.0):
         .object
     )
     if not wind_sea:
-        ocean, _fade = harness.addon("water.open_sea").sea_modifiers(sea)
+        ocean, _fade = harness.addon("water.sea.open_sea").sea_modifiers(sea)
         ocean.show_viewport = ocean.show_render = False
     return sea
 
@@ -238,7 +238,7 @@ def test_it_follows_the_hull_moving_and_turning_by_keys_added_after_it_floated(s
         depsgraph = bpy.context.evaluated_depsgraph_get()
         want = (14.0 + 26.0 * share, -9.0 + 25.0 * share)
         _follows(hull, probes, depsgraph, want, YAW + 0.8 * share, f"frame {frame}")
-    assert harness.addon("water.floating").rig_out_of_date(hull) is None
+    assert harness.addon("water.boats.floating").rig_out_of_date(hull) is None
 
 
 def _rig_objects():
@@ -256,14 +256,14 @@ def test_stop_a_copy_and_a_deleted_hull_leave_nothing_behind(scene, tmp_path):
     assert _api().stop_floating(hull) == ["'Hull' no longer floats", "'Hull' leaves no wake on 'Sea'"]
     assert _rig_objects() == [] and not hull.constraints
     assert not [m for m in bpy.data.meshes if "Float Patch" in m.name], "the patch's mesh went too"
-    assert not harness.addon("water.wake").wake_modifiers(sea), "the wake floating added went too"
+    assert not harness.addon("water.boats.wake").wake_modifiers(sea), "the wake floating added went too"
     assert hull.animation_data is None or hull.animation_data.action is None
     assert "Water Float Rigs" not in bpy.data.collections
 
     _api().float_on_water(hull, sea, draft=DRAFT)
     copy = hull.copy()
     scene.collection.objects.link(copy)
-    floating = harness.addon("water.floating")
+    floating = harness.addon("water.boats.floating")
     assert "a copy" in floating.rig_out_of_date(copy)
     _api().float_on_water(copy, sea)
     assert len(_rig_objects()) == 48 and floating.rig_out_of_date(hull) is None
@@ -319,7 +319,7 @@ def test_the_operator_takes_draft_and_footprint_and_the_panel_offers_float_again
         draft_from_bounds=False, draft=1.0, length=20.0, beam=5.0, tilt_damping=0.25
     )
     assert result == {"FINISHED"}
-    floating = harness.addon("water.floating")
+    floating = harness.addon("water.boats.floating")
     # The draft asked for is where the hull sits: its keel 1 m under the plane fitted over the
     # hull's 25 x 6 m (the probes' 20 x 5 m footprint averages the 100 m swell a little less:
     # up to 5 cm apart), so its origin stands 0.5 m higher than at the 1.5 m `_track` expects.
@@ -380,8 +380,8 @@ def test_it_follows_a_hull_carried_by_a_parent_or_a_follow_path(scene):
         twins[hull] = twin
     for hull in (carried, led):
         _api().float_on_water(hull, sea, draft=DRAFT)
-    rig = harness.addon("water.float_rig")
-    floating = harness.addon("water.floating")
+    rig = harness.addon("water.boats.float_rig")
+    floating = harness.addon("water.boats.floating")
     turned = {}
     for frame in (1, 20, 49):
         scene.frame_set(frame)

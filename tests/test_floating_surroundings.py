@@ -79,7 +79,7 @@ def test_a_users_collection_with_the_floating_boat_is_refused_never_edited(boat_
     _api().set_surroundings(water, mine)
     with pytest.raises(_api().FloatError, match="My Harbour"):
         _api().float_on_water(boat, water)
-    assert not harness.addon("water.floating").is_floating(boat)
+    assert not harness.addon("water.boats.floating").is_floating(boat)
     assert sorted(o.name for o in mine.objects) == ["Bed", "Boat"]
     assert "Dependency cycle" not in _evaluate(scene)
 
@@ -106,6 +106,6 @@ def test_floating_and_stopping_leaves_no_constraint_behind(scene):
     water = _api().add_water(scene, size=8, resolution=8, see_surroundings=False).object
     buoy = harness.add_cube(scene, (0.0, 0.0, 2.0), size=0.5, name="Buoy")
     _api().float_on_water(buoy, water)
-    assert harness.addon("water.floating").floating_on(buoy) == water
+    assert harness.addon("water.boats.floating").floating_on(buoy) == water
     _api().stop_floating(buoy)
     assert len(buoy.constraints) == 0

@@ -236,7 +236,7 @@ def test_operator_panel_again_after_a_change_of_shape_and_let_in(scene):
     assert bpy.ops.object.water_keep_out() == {"FINISHED"}
     labels = [entry[1] for entry in draw_panel() if entry[0] == "label"]
     assert "'Lake' is kept out of it" in labels
-    keep_out = harness.addon("water.keep_out")
+    keep_out = harness.addon("water.boats.keep_out")
     ((group, coords, hull),) = keep_out.hull_nodes(water.active_material)
     assert hull == box and coords.object == box
     assert tree.nodes["Material Output"].inputs["Surface"].links[0].from_node.name == keep_out.MIX_NODE
@@ -266,7 +266,7 @@ def test_operator_panel_again_after_a_change_of_shape_and_let_in(scene):
 
 def test_nothing_to_keep_out_of_is_refused_with_a_reason(scene):
     water, box = _lake_with_box(scene)
-    keep_out = harness.addon("water.keep_out")
+    keep_out = harness.addon("water.boats.keep_out")
     wall = bpy.data.objects.new("Wall", bpy.data.meshes.new("Wall"))
     wall.data.from_pydata([(0, 0, -1), (2, 0, -1), (2, 0, 1), (0, 0, 1)], [], [(0, 1, 2, 3)])
     scene.collection.objects.link(wall)
@@ -291,7 +291,7 @@ def test_repair_keeps_the_hulls_dry(scene):
     node.node_tree = group
     assert harness.addon("water.repair").needs_repair(material) is not None
     harness.addon("water.repair").repair_water(material, scene)
-    mix = material.node_tree.nodes[harness.addon("water.keep_out").MIX_NODE]
+    mix = material.node_tree.nodes[harness.addon("water.boats.keep_out").MIX_NODE]
     assert mix.inputs[1].links[0].from_node == node
     assert material.node_tree.nodes["Material Output"].inputs["Surface"].links[0].from_node == mix
     assert mix.inputs["Fac"].is_linked
@@ -304,7 +304,7 @@ def test_a_deleted_hull_and_a_removed_water_leave_nothing_behind(scene, tmp_path
     _api().float_on_water(box, water, draft=0.5)
     _api().keep_water_out(box, water)
     _api().keep_water_out(box, other)
-    keep_out = harness.addon("water.keep_out")
+    keep_out = harness.addon("water.boats.keep_out")
     assert {w.name for w in keep_out.kept_out_of(box)} == {"Lake", "Ocean"}
     assert _api().remove_water(other, scene)
     assert _own_data() == (["Water Dry Boat"], ["Water Keep Out (Water Dry Boat)"])

@@ -149,7 +149,7 @@ def test_floating_a_wake_and_keep_out_follow_the_table_for_each_kind(waters, sce
 def test_the_water_an_object_acts_on_is_picked_by_one_rule(waters, scene):
     """Issue 41 point 2: the API and the operators pick the water by `floating.water_for` and say
     there is none in its one wording."""
-    api, floating = _api(), harness.addon("water.floating")
+    api, floating = _api(), harness.addon("water.boats.floating")
     stray = harness.add_cube(scene, (0.0, -90000.0, 0.0), size=0.6, name="Stray")  # past the sea
     why = re.escape(floating.no_water(stray))
     for call, error in (

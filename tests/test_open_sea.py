@@ -58,7 +58,7 @@ def test_the_open_sea_moves_with_the_clock_and_its_waves_and_foam_grow_with_the_
     0.89, 0.89, 1.00 of it at 3, 6 and 12 m/s; test_sea_state.py: within 15% over time, whatever
     the wind), and the fade marks the crests the shading may break into whitecaps. The seeds' ocean
     preset stays the four sines."""
-    open_sea = harness.addon("water.open_sea")
+    open_sea = harness.addon("water.sea.open_sea")
     spread, whitecaps = {}, {}
     for wind in (3.0, 6.0, 12.0):
         sea = _open_sea(scene, resolution=65, sea_wind_speed=wind, name=f"Sea {wind:g}").object
@@ -157,7 +157,7 @@ def test_whitecaps_none_in_a_light_wind_and_clear_in_a_strong_one(sea_scene, ren
     share = {}
     for wind, obj in sea_scene["seas"].items():
         _show(sea_scene, wind)
-        whitecaps = harness.addon("water.open_sea").whitecaps_input(obj.active_material)
+        whitecaps = harness.addon("water.sea.open_sea").whitecaps_input(obj.active_material)
         on = render(scene, f"whitecaps_{wind:g}", exr=True)[..., :3].mean(axis=-1)
         whitecaps.default_value = 0.0
         try:
@@ -233,7 +233,7 @@ def test_no_two_points_a_tile_apart_both_carry_waves_within_a_frame(scene):
     tile's shift lands on the same place in a cell), without the fade: the measure finds its
     repeat."""
     sea = _open_sea(scene, sea_wind_speed=15.0, resolution=257).object
-    ocean, _fade = harness.addon("water.open_sea").sea_modifiers(sea)
+    ocean, _fade = harness.addon("water.sea.open_sea").sea_modifiers(sea)
     tile = ocean.spatial_size
     eye, forward, right = Vector((5.0, -3.0, 2.0)), Vector((0.6, 0.8, 0.0)), Vector((0.8, -0.6, 0.0))
     control = bpy.data.objects.new(
@@ -242,7 +242,7 @@ def test_no_two_points_a_tile_apart_both_carry_waves_within_a_frame(scene):
     scene.collection.objects.link(control)
     control.location = (eye.x, eye.y, 0.0)
     copy = control.modifiers.new("Ocean", "OCEAN")
-    harness.addon("water.open_sea").copy_settings(ocean, copy)
+    harness.addon("water.sea.open_sea").copy_settings(ocean, copy)
     scene.frame_set(24)
     copy.time = ocean.time
     share, pairs = _repeat_share(sea, eye, forward, right, tile)
@@ -366,7 +366,7 @@ def test_the_operator_floats_the_selection_on_the_selected_water_with_damped_til
 def test_bad_sea_values_are_clamped_and_said(scene):
     """Wind 0 or 100 m/s, depth 0, a huge size: clamped into range; an FFT the free memory cannot
     hold: a coarser one, with a note."""
-    open_sea, sea_math = harness.addon("water.open_sea"), harness.addon("water.sea_math")
+    open_sea, sea_math = harness.addon("water.sea.open_sea"), harness.addon("water.sea.sea_math")
     calm = _open_sea(scene, resolution=33, sea_wind_speed=0.0, sea_depth=0.0, size=1.0e12)
     ocean = next(m for m in calm.object.modifiers if m.type == "OCEAN")
     assert ocean.wind_velocity == pytest.approx(1.0) and ocean.depth == pytest.approx(1.0)

@@ -45,7 +45,7 @@ def test_the_sea_s_slopes_are_cox_and_munk_s_upwind_larger(addon, eevee, render,
     scene.collection.objects.link(camera)
     scene.camera = camera
     up, cross = _slopes_seen(scene, added.object, render, f"down-{wind:g}-{direction[0]:g}", direction)
-    cox_munk = harness.addon("water.sea_math").cox_munk_slopes(wind)
+    cox_munk = harness.addon("water.sea.sea_math").cox_munk_slopes(wind)
     total, expected = up + cross, sum(cox_munk)
     print(f"{wind} m/s: upwind {up:.4f} crosswind {cross:.4f} total {total:.4f}; Cox-Munk {cox_munk}")
     assert abs(total / expected - 1.0) < 0.35
@@ -60,8 +60,8 @@ def test_the_sea_s_slopes_are_cox_and_munk_s_upwind_larger(addon, eevee, render,
 def test_the_slopes_follow_the_wind_set_in_the_panel(scene):
     added = _api().add_water(scene, preset="open_sea", sea_wind_speed=5.0, see_surroundings=False)
     normal, _shade = harness.addon("nodes.ocean_material").ocean_nodes(added.material)
-    ocean, _fade = harness.addon("water.open_sea").sea_modifiers(added.object)
-    sea_math = harness.addon("water.sea_math")
+    ocean, _fade = harness.addon("water.sea.open_sea").sea_modifiers(added.object)
+    sea_math = harness.addon("water.sea.sea_math")
 
     def evaluated():
         depsgraph = bpy.context.evaluated_depsgraph_get()
@@ -96,7 +96,7 @@ def test_repair_gives_the_sea_its_wind_drivers_back(scene):
     depsgraph = bpy.context.evaluated_depsgraph_get()
     depsgraph.update()
     node = harness.addon("nodes.ocean_material").ocean_nodes(added.material.evaluated_get(depsgraph))[0]
-    up, cross = harness.addon("water.sea_math").cox_munk_slopes(9.0)
+    up, cross = harness.addon("water.sea.sea_math").cox_munk_slopes(9.0)
     assert node.inputs["Slope Along Wind"].default_value ** 2 == pytest.approx(up, rel=1e-3)
     assert node.inputs["Slope Across Wind"].default_value ** 2 == pytest.approx(cross, rel=1e-3)
     assert node.inputs["Even Slopes"].default_value == 1.0

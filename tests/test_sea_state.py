@@ -78,7 +78,7 @@ def _fitted_peak_period(frequency, power, guess):
 
 def _inner(sea, share=0.25):
     """The points within `share` of a tile of the centre (where nothing fades)."""
-    ocean, _fade = harness.addon("water.open_sea").sea_modifiers(sea)
+    ocean, _fade = harness.addon("water.sea.open_sea").sea_modifiers(sea)
     rest, _position = _points(sea)
     return np.hypot(rest[:, 0], rest[:, 1]) < share * ocean.spatial_size
 
@@ -139,7 +139,7 @@ def _local_plane_wave(xy, heights, times, period, wavelength):
 def _tile_spectrum(scene, modifier):
     """(power, kx, ky) of the heights `modifier`'s settings give over its whole tile: a copy of it
     on a grid of its FFT's own cells, evaluated at the scene's frame."""
-    open_sea = harness.addon("water.open_sea")
+    open_sea = harness.addon("water.sea.open_sea")
     cells = modifier.resolution**2
     tile = modifier.spatial_size
     axis = np.arange(cells) * tile / cells
@@ -183,7 +183,7 @@ def test_a_swell_s_wavelength_direction_and_height_on_top_of_the_wind_sea(scene)
         sea_swell_period=period,
         sea_swell_direction=SWELL,
     )
-    open_sea = harness.addon("water.open_sea")
+    open_sea = harness.addon("water.sea.open_sea")
     ocean, _fade = open_sea.sea_modifiers(sea)
     swell = open_sea.swell_modifier(sea)
     assert [m.name for m in sea.modifiers][:3] == ["Water Swell", "Water Ocean", "Water Sea Fade"]
@@ -243,7 +243,7 @@ def test_the_swell_keys_through_the_operator_panel_and_api_and_height_0_removes_
     """The add operator takes the three keys; the panel shows the swell and offers its operator,
     which (as `api.set_swell`) changes what it is given and keeps the rest; a swell the sea was
     added without comes and goes with its height, its time driver with it; a lake refuses it."""
-    open_sea = harness.addon("water.open_sea")
+    open_sea = harness.addon("water.sea.open_sea")
     assert _open_sea(scene, resolution=17, name="Calm") is not None
     assert open_sea.swell_modifier(bpy.data.objects["Calm"]) is None, "the preset's height 0: no swell"
     result = bpy.ops.object.water_surface_add(
@@ -257,7 +257,7 @@ def test_the_swell_keys_through_the_operator_panel_and_api_and_height_0_removes_
     assert result == {"FINISHED"}
     sea = bpy.context.active_object
     swell = open_sea.swell_modifier(sea)
-    sea_math = harness.addon("water.sea_math")
+    sea_math = harness.addon("water.sea.sea_math")
     assert swell.spatial_size == round(sea_math.SWELL_TILE_WAVES * sea_math.wavelength(12.0, 200.0))
     assert sea_math.angle_direction(swell.wave_direction) == pytest.approx((0.6, -0.8))
     assert swell.random_seed == open_sea.sea_modifiers(sea)[0].random_seed
@@ -300,7 +300,7 @@ def test_the_command_line_adds_a_sea_with_a_swell(scene, tmp_path, capsys):
     options += ["--sea-swell-period", "11", "--sea-swell-direction", "-0.28", "0.96"]
     assert harness.addon("cli").main(["add", str(source), str(target), *options]) == 0, capsys.readouterr()
     bpy.ops.wm.open_mainfile(filepath=str(target))
-    values = harness.addon("water.open_sea").swell_values(bpy.data.objects["Water"])
+    values = harness.addon("water.sea.open_sea").swell_values(bpy.data.objects["Water"])
     assert values["sea_swell_height"] == 2.5 and values["sea_swell_period"] == 11.0
     assert values["sea_swell_direction"] == pytest.approx(SWELL)
 
@@ -313,7 +313,7 @@ def test_repair_floating_and_removal_keep_working_with_a_swell(scene):
     from test_repair import _remove_input
 
     sea = _open_sea(scene, resolution=65, sea_wind_speed=8.0, sea_swell_height=2.0, sea_swell_direction=SWELL)
-    open_sea = harness.addon("water.open_sea")
+    open_sea = harness.addon("water.sea.open_sea")
     shade = harness.addon("nodes.ocean_material").ocean_nodes(sea.active_material)[1]
     _remove_input(shade.node_tree, "Deep Color")
     bpy.context.view_layer.objects.active = sea

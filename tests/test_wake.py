@@ -172,7 +172,7 @@ def test_a_floating_hull_at_froude_0_35_leaves_the_models_wake(lake_wake):
     stern is the numpy model's. At this Froude number and this near, the model's highest waves
     are the transverse ones on the track, not the arms (those win only much further behind)."""
     x, y = _track_frame(lake_wake["points"], _end(), HEADING)
-    (modifier,) = harness.addon("water.wake").wake_modifiers(lake_wake["water"])
+    (modifier,) = harness.addon("water.boats.wake").wake_modifiers(lake_wake["water"])
     fade = harness.addon("water.waves").get_wave_input(modifier, "Fade")
     reach = SPEED * _track_seconds() - HULL[0] / 2
     x, y, height, model, residual = _against_kelvin(
@@ -307,7 +307,7 @@ def _straight_wake(length, speed, seconds, heading=2.3, end=(-8.0, 8.0), size=90
         hull.keyframe_insert("rotation_euler", frame=frame)
     _linear(hull)
     _api().add_wake_source(hull, water)
-    (modifier,) = harness.addon("water.wake").wake_modifiers(water)
+    (modifier,) = harness.addon("water.boats.wake").wake_modifiers(water)
     for name, value in (({"Fade": fade} if fade is not None else {}) | (inputs or {})).items():
         harness.addon("water.waves").set_wave_input(modifier, name, value)
     _step(scene, last)
@@ -525,7 +525,7 @@ def test_the_wake_worked_out_only_round_its_track_equals_it_worked_out_everywher
         hull.location = (along * math.cos(0.5), along * math.sin(0.5) + 6.0 * math.sin(heading), 0.0)
         hull.keyframe_insert("location", frame=frame)
     _api().add_wake_source(hull, water)
-    (modifier,) = harness.addon("water.wake").wake_modifiers(water)
+    (modifier,) = harness.addon("water.boats.wake").wake_modifiers(water)
     walked = _with_feet(modifier.node_group.copy())
     found = {}
     for name, group in (
@@ -663,7 +663,7 @@ def test_on_the_seeds_ocean_the_wake_tilts_the_normal_it_shades_with(addon):
     hull = _hull(scene, size=(4.0, 1.6, 1.0))
     _run_straight(hull, speed=3.0, heading=0.6, start=np.array([-12.0, -8.0]))
     _api().add_wake_source(hull, water)
-    (modifier,) = harness.addon("water.wake").wake_modifiers(water)
+    (modifier,) = harness.addon("water.boats.wake").wake_modifiers(water)
     _step(scene)
     heights, stored, slopes = _normals_and_heights(water, cell)
     modifier.show_viewport = False
@@ -709,7 +709,7 @@ def test_the_wake_on_the_open_sea_is_the_models_and_its_shading_shows_the_foam(a
     _api().add_wake_source(hull, sea)
     _step(scene)
     with_wake, _foam = _surface(sea)
-    (modifier,) = harness.addon("water.wake").wake_modifiers(sea)
+    (modifier,) = harness.addon("water.boats.wake").wake_modifiers(sea)
     modifier.show_viewport = False
     without, _none = _surface(sea)
     height = with_wake[:, 2] - without[:, 2]
@@ -733,7 +733,7 @@ def test_floating_and_stopping_keep_the_wake_without_a_cycle_and_a_deleted_hull_
     hull = _hull(scene)
     _run_straight(hull, start=np.array([-12.0, -8.0]))
     _api().add_wake_source(hull, water)
-    wake = harness.addon("water.wake")
+    wake = harness.addon("water.boats.wake")
     (modifier,) = wake.wake_modifiers(water)
     waves = harness.addon("water.waves")
     assert waves.get_wave_input(modifier, "Source") == hull
@@ -869,7 +869,7 @@ def test_the_operators_and_the_panel(scene):
     bpy.context.view_layer.objects.active = hull
     assert not bpy.ops.object.water_wake_remove.poll()
     assert bpy.ops.object.water_wake_add(strength=0.5) == {"FINISHED"}
-    wake = harness.addon("water.wake")
+    wake = harness.addon("water.boats.wake")
     (modifier,) = wake.wake_modifiers(water)
     assert harness.addon("water.waves").get_wave_input(modifier, "Strength") == pytest.approx(0.5)
     labels = [entry[1] for entry in draw_panel() if entry[0] == "label"]
@@ -883,7 +883,7 @@ def test_the_operators_and_the_panel(scene):
 
 
 def test_a_dry_hull_stays_dry_under_its_own_foam_whichever_came_first(scene):
-    keep_out = harness.addon("water.keep_out")
+    keep_out = harness.addon("water.boats.keep_out")
     for first in ("keep out", "wake"):
         water = _api().add_water(scene, preset="lake", size=20.0, resolution=41, name=f"Lake {first}").object
         hull = _hull(scene, f"Hull {first}")

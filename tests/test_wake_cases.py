@@ -49,7 +49,7 @@ def test_two_objects_selected_and_no_water_both_act_on_the_water_below(scene, op
     boats = [_box(scene, f"Boat {i}", (-5.0 + 10.0 * i, 2.0, 0.0)) for i in range(2)]
     _select(*boats)
     assert getattr(bpy.ops.object, operator)() == {"FINISHED"}
-    wake = harness.addon("water.wake")
+    wake = harness.addon("water.boats.wake")
     assert sorted(s.name for s in wake.wake_sources(water)) == ["Boat 0", "Boat 1"]
     if operator == "water_float":
         floating = harness.addon("water.float_constraints")
@@ -60,8 +60,8 @@ def test_bad_values_are_one_line_errors_and_leave_nothing_half_made(scene):
     api = _api()
     water = api.add_water(scene, preset="lake", size=30.0, resolution=61, name="Lake").object
     boat = _box(scene, "Boat", (0.0, 0.0, 0.0))
-    wake = harness.addon("water.wake")
-    floating = harness.addon("water.floating")
+    wake = harness.addon("water.boats.wake")
+    floating = harness.addon("water.boats.floating")
     with pytest.raises(wake.WakeError, match="not water"):
         api.bake(None)
     for strength in ("x", None, math.nan, -1.0, 11.0):
@@ -116,7 +116,7 @@ def test_on_the_default_lake_the_panel_says_the_mesh_is_too_coarse_and_offers_a_
     note = next(change for change in changes if "too coarse" in change)
     print(note)
     assert "Resolution 129 or more" in note  # 128 m at 1 m: a 4 m hull's waves need 1 m cells
-    (modifier,) = harness.addon("water.wake").wake_modifiers(water)
+    (modifier,) = harness.addon("water.boats.wake").wake_modifiers(water)
     detail = modifier.node_group.interface.items_tree["Detail"]
     assert harness.addon("water.waves").get_wave_input(modifier, "Detail") <= detail.max_value
     _select(boat)
@@ -214,7 +214,7 @@ def test_a_bake_gone_stale_is_said_in_the_panel_and_when_rendering_the_file(scen
     water = bpy.data.objects["Lake"]
     scene.frame_start = scene.frame_end = 1
     api.bake(water, scene)
-    assert harness.addon("water.wake").bake_problems(water, scene) == [
+    assert harness.addon("water.boats.wake").bake_problems(water, scene) == [
         "The wake of 'Boat' was baked over one frame: it has no wake; bake the range"
     ]
 
@@ -232,21 +232,22 @@ def test_a_hull_and_its_child_float_and_leave_a_wake_without_a_cycle(scene):
         hull.location.x = x
         hull.keyframe_insert("location", frame=frame)
     floating = harness.addon("water.float_constraints")
-    wake = harness.addon("water.wake")
+    wake = harness.addon("water.boats.wake")
     _select(cabin, hull)  # the child first in the selection
     assert bpy.ops.object.water_float() == {"FINISHED"}
     assert floating.floating_on(hull) == water and floating.floating_on(cabin) is None
     assert [s.name for s in wake.wake_sources(water)] == ["Hull"]
     with pytest.raises(wake.WakeError, match="rides on 'Hull', which floats"):
         api.add_wake_source(cabin, water)
-    with pytest.raises(harness.addon("water.floating").FloatError, match="child of 'Hull', which floats"):
+    float_error = harness.addon("water.boats.floating").FloatError
+    with pytest.raises(float_error, match="child of 'Hull', which floats"):
         api.float_on_water(cabin, water)
     output, _result = harness.blender_output(lambda: [scene.frame_set(f) for f in range(1, 21)])
     assert "Dependency cycle" not in output
     api.stop_floating(hull)
     api.add_wake_source(cabin, water)
     with pytest.raises(
-        harness.addon("water.floating").FloatError, match="'Cabin', a child of 'Hull', leaves a wake"
+        harness.addon("water.boats.floating").FloatError, match="'Cabin', a child of 'Hull', leaves a wake"
     ):
         api.float_on_water(hull, water)
 

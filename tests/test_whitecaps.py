@@ -66,7 +66,7 @@ def _foam_view_sea(scene, wind):
 def _foam_views(sea_scene, wind, render, frames=FRAMES):
     """(foam views at `frames`, metres a pixel) of the open sea at `wind` m/s, straight down."""
     scene = sea_scene
-    ocean = harness.addon("water.open_sea").sea_modifiers(_foam_view_sea(scene, wind))[0]
+    ocean = harness.addon("water.sea.open_sea").sea_modifiers(_foam_view_sea(scene, wind))[0]
     span = VIEW_TILES * ocean.spatial_size
     scene.camera = camera = bpy.data.objects["Down"]
     scene.render.resolution_x = scene.render.resolution_y = PIXELS
@@ -187,7 +187,7 @@ def test_a_crest_s_foam_fades_within_seconds_after_it_passes(scene):
         .add_water(scene, preset="open_sea", sea_wind_speed=15.0, wind_direction=WIND)
         .object
     )
-    ocean = harness.addon("water.open_sea").sea_modifiers(sea)[0]
+    ocean = harness.addon("water.sea.open_sea").sea_modifiers(sea)[0]
     depsgraph = bpy.context.evaluated_depsgraph_get()
     series, picked = [], None
     for frame in range(1, 41):

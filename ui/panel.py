@@ -12,10 +12,12 @@ from ..nodes.ocean_material import ocean_nodes
 from ..nodes.water_surface import DEBUG_VIEWS
 from ..nodes.water_waves import WAVE_COUNT
 from ..operators.part_ops import PART_ITEMS
-from ..water import camera_clip, floating, keep_out, kind, open_sea, physical_caustics, wake
+from ..water import camera_clip, kind, physical_caustics
+from ..water.boats import floating, keep_out, wake
 from ..water.editable import why_not_editable
 from ..water.mirror import find_probe
 from ..water.repair import needs_repair
+from ..water.sea import open_sea
 from ..water.surroundings import surroundings_collection, surroundings_modifier
 from ..water.values import water_material
 from ..water.waves import input_ids, input_property, wave_modifier

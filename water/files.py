@@ -46,7 +46,7 @@ from pathlib import Path
 import bpy
 
 from ..presets import PresetError
-from . import wake
+from .boats import wake
 from .plane import AddWaterError, add_water, resolve_values
 
 IMAGE_FORMATS = {".png": "PNG", ".exr": "OPEN_EXR", ".jpg": "JPEG", ".jpeg": "JPEG", ".tif": "TIFF"}

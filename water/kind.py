@@ -10,7 +10,7 @@ and nowhere else decides (the add pipeline and repair read the kind only to buil
 
 from ..nodes.material import water_node
 from ..nodes.ocean_material import ocean_nodes
-from . import open_sea
+from .sea import open_sea
 
 LAKE = "lake"
 OCEAN = "ocean"

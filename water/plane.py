@@ -10,10 +10,11 @@ from .. import presets
 from ..nodes.material import make_water_material
 from ..nodes.ocean_material import make_ocean_material
 from ..presets import schema
-from . import camera_clip, kind, mirror, open_sea, scene_state, sea_math, surroundings, waves
+from . import camera_clip, kind, mirror, scene_state, surroundings, waves
 from .editable import check_editable
 from .grid import grid_mesh, max_resolution
-from .sea_mesh import new_sea_mesh
+from .sea import open_sea, sea_math
+from .sea.sea_mesh import new_sea_mesh
 from .values import set_values
 
 

@@ -16,18 +16,8 @@ file holds none of it: the scene settings their set-up changed go back by the sa
 import bpy
 
 from ..nodes.ownership import is_original, role_of
-from . import (
-    float_rig,
-    floating,
-    keep_out,
-    kind,
-    ledger,
-    mirror,
-    physical_caustics,
-    sun_link,
-    surroundings,
-    wake,
-)
+from . import kind, ledger, mirror, physical_caustics, sun_link, surroundings
+from .boats import float_rig, floating, keep_out, wake
 from .editable import check_editable
 from .float_constraints import float_constraints, floating_on
 from .values import water_material

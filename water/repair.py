@@ -28,9 +28,10 @@ from ..nodes.material import (
 )
 from ..nodes.ocean_material import NORMAL_NODE, OCEAN_NODE, SKY_NODE, fit_shade_parts, ocean_nodes
 from ..nodes.ownership import role_of
-from . import keep_out, open_sea
+from .boats import keep_out
 from .editable import NotEditableError, check_editable, why_not_editable
 from .kind import LAKE, OCEAN, shading_of
+from .sea import open_sea
 
 # Inputs the material drives: never kept or reset, driven again after a repair.
 _DRIVEN = {

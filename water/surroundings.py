@@ -48,11 +48,12 @@ from ..nodes import surroundings as spec
 from ..nodes.builder import ensure_group
 from ..nodes.ownership import is_local, is_original, mark, role_of
 from ..presets import schema
-from . import kind, open_sea
+from . import kind
 from .editable import check_editable
 from .float_constraints import RIG_KEY, floating_on
 from .grid import max_resolution
 from .mirror import rest_bounds
+from .sea import open_sea
 from .values import is_water
 from .waves import amplitude_sum, input_ids, input_property, set_wave_input, wave_modifier
 

@@ -32,7 +32,7 @@ _package()
 
 
 def load(name):
-    """The add-on's module `name` ("presets.schema", "water.sea_math"), imported without Blender."""
+    """The add-on's module `name` ("presets.schema", "water.sea.sea_math"), imported without Blender."""
     return importlib.import_module(f"{PACKAGE}.{name}")
 
 

@@ -42,7 +42,7 @@ def _sample(mask, origin, cell, x, y):
 
 
 def test_an_open_box_is_dry_inside_and_its_edge_lies_just_inside_its_walls():
-    dm = load("water.dry_mask_math")
+    dm = load("water.boats.dry_mask_math")
     mask, origin, cell = dm.dry_mask(_open_box(-1.0, 1.0, -0.6, 0.6, -0.5, 0.5), -0.5, 0.5)
     assert mask.shape[1] == dm.LONG_SIDE
     assert _sample(mask, origin, cell, 0.0, 0.0) == 1.0
@@ -61,7 +61,7 @@ def test_an_open_box_is_dry_inside_and_its_edge_lies_just_inside_its_walls():
 
 
 def test_a_turned_box_keeps_its_edge_just_inside_its_walls():
-    dm = load("water.dry_mask_math")
+    dm = load("water.boats.dry_mask_math")
     turn = 0.5
     c, s = np.cos(turn), np.sin(turn)
     box = _open_box(-1.0, 1.0, -0.6, 0.6, -0.5, 0.5) @ np.array([[c, s, 0.0], [-s, c, 0.0], [0.0, 0.0, 1.0]])
@@ -74,7 +74,7 @@ def test_a_turned_box_keeps_its_edge_just_inside_its_walls():
 
 
 def test_thick_walls_and_a_concave_outline_are_filled_as_enclosed():
-    dm = load("water.dry_mask_math")
+    dm = load("water.boats.dry_mask_math")
     # An L of two open boxes' outlines (thin walls) sliced at mid height: the notch stays wet.
     outline = np.array(
         [
@@ -101,7 +101,7 @@ def test_thick_walls_and_a_concave_outline_are_filled_as_enclosed():
 
 
 def test_thick_walled_box_is_dry_between_its_walls():
-    dm = load("water.dry_mask_math")
+    dm = load("water.boats.dry_mask_math")
     outer = _open_box(-2.0, 2.0, -1.0, 1.0, 0.0, 1.0)[2:]  # walls only
     inner = _open_box(-1.9, 1.9, -0.9, 0.9, 0.1, 1.0)[2:]
     mask, origin, cell = dm.dry_mask(np.concatenate([outer, inner]), 0.0, 1.0, 128)
@@ -111,7 +111,7 @@ def test_thick_walled_box_is_dry_between_its_walls():
 
 
 def test_only_the_band_counts_a_bowsprit_above_it_stays_wet():
-    dm = load("water.dry_mask_math")
+    dm = load("water.boats.dry_mask_math")
     hull = _open_box(-2.0, 2.0, -1.0, 1.0, 0.0, 1.0)
     bowsprit = _open_box(2.0, 3.5, -0.1, 0.1, 1.5, 1.7)
     mask, origin, cell = dm.dry_mask(np.concatenate([hull, bowsprit]), 0.0, 1.2)

@@ -79,7 +79,8 @@ def _deciding_by_kind():
             _name(o) in KIND_NAMES for o in [node.left, *node.comparators]
         ):
             found.append((path, where, node.lineno))
-        if isinstance(node, ast.Call) and _name(node.func) == "is_open_sea" and path != "water/open_sea.py":
+        open_sea_itself = path == "water/sea/open_sea.py"
+        if isinstance(node, ast.Call) and _name(node.func) == "is_open_sea" and not open_sea_itself:
             found.append((path, where, node.lineno))
         for child in ast.iter_child_nodes(node):
             visit(path, child, where)

@@ -11,7 +11,7 @@ def _heights(points, wave):
 
 
 def test_the_weights_recover_a_plane_exactly_off_centre():
-    fm = load("water.footprint_math")
+    fm = load("water.boats.footprint_math")
     points = fm.probe_grid(12.0, 4.0, centre=(1.5, -0.3), long_axis="Y")
     weights = fm.plane_weights(points)
     heights = _heights(points, lambda x, y: 0.7 + 0.05 * x - 0.12 * y)
@@ -23,7 +23,7 @@ def test_long_waves_tilt_it_as_the_footprint_and_short_ones_cancel():
     """Waves 4 hull lengths long: the probes' slope within 3% of the footprint's (continuous
     least-squares) slope, their mean within 3% of the footprint's mean; waves a quarter of its
     length: under a tenth of their own slope and height, at every phase."""
-    fm = load("water.footprint_math")
+    fm = load("water.boats.footprint_math")
     length = 20.0
     points = fm.probe_grid(length, 5.0)
     weights = fm.plane_weights(points)
@@ -44,7 +44,7 @@ def test_long_waves_tilt_it_as_the_footprint_and_short_ones_cancel():
 
 
 def test_sizes_are_checked_and_the_draft_has_a_default():
-    fm = load("water.footprint_math")
+    fm = load("water.boats.footprint_math")
     with pytest.raises(ValueError, match="above 0"):
         fm.probe_grid(0.0, 2.0)
     with pytest.raises(ValueError, match="odd"):

@@ -17,11 +17,11 @@ def test_these_modules_import_without_blender():
         "presets",
         "presets.schema",
         "presets.store",
-        "water.sea_math",
+        "water.sea.sea_math",
         "nodes.wave_math",
-        "water.footprint_math",
-        "water.dry_mask_math",
-        "water.whitecap_math",
+        "water.boats.footprint_math",
+        "water.boats.dry_mask_math",
+        "water.sea.whitecap_math",
     ):
         load(name)
     load("nodes")  # the group descriptions are data
@@ -67,7 +67,7 @@ def test_the_built_in_presets_read_and_a_byte_order_mark_is_fine(addon_module, t
 
 
 def test_a_grown_seas_height_and_tile_follow_the_wind(addon_module):
-    sea = addon_module("water.sea_math")
+    sea = addon_module("water.sea.sea_math")
     for wind in (5.0, 10.0, 15.0):
         for spectrum in sea.HEIGHT_STD_AT_SCALE_1:
             hs = 4.0 * sea.wave_scale(wind, spectrum) * sea.HEIGHT_STD_AT_SCALE_1[spectrum]
@@ -90,7 +90,7 @@ def test_a_grown_seas_height_and_tile_follow_the_wind(addon_module):
 def test_a_grown_sea_s_height_period_and_a_measured_calibration(addon_module):
     """Pierson and Moskowitz: Hs 0.21 U^2 / g, Tp 2 pi U / (0.877 g); `wave_scale` from the
     heights' spread at `wave_scale` 1, measured when given, else the spectrum's typical one."""
-    sea = addon_module("water.sea_math")
+    sea = addon_module("water.sea.sea_math")
     assert sea.significant_height(10.0) == pytest.approx(2.141, abs=1e-3)
     assert sea.peak_period(10.0) == pytest.approx(7.303, abs=1e-3)
     assert sea.peak_period(0.0) == 0.0
@@ -108,7 +108,7 @@ def test_the_swell_s_wavelength_tile_and_narrow_spectrum(addon_module):
     """The swell's waves are g T^2 / 2 pi long in deep water (the dispersion relation's in
     shallow water, T sqrt(g d) as it grows shallow); its tile holds SWELL_TILE_WAVES of them, and
     Blender's Phillips spectrum with its settings peaks at the tile's ring of that many waves."""
-    sea = addon_module("water.sea_math")
+    sea = addon_module("water.sea.sea_math")
     assert sea.wavelength(10.0) == pytest.approx(9.81 * 100 / (2 * math.pi))
     assert sea.wavelength(10.0, 1000.0) == pytest.approx(sea.wavelength(10.0), rel=1e-9)
     assert sea.wavelength(20.0, 2.0) == pytest.approx(20.0 * math.sqrt(9.81 * 2.0), rel=0.01)

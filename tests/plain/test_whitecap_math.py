@@ -6,19 +6,19 @@ from conftest import load
 
 @pytest.mark.parametrize(("wind", "share"), [(10.0, 0.0099), (15.0, 0.039), (20.0, 0.105)])
 def test_coverage_is_monahan_s_in_a_breaking_sea(wind, share):
-    math = load("water.whitecap_math")
+    math = load("water.sea.whitecap_math")
     assert math.whitecap_coverage(wind) == pytest.approx(share, rel=0.02)
 
 
 def test_light_winds_raise_next_to_no_whitecaps():
-    math = load("water.whitecap_math")
+    math = load("water.sea.whitecap_math")
     assert math.whitecap_coverage(3.0) == 0.0
     assert math.whitecap_coverage(5.0) < 0.001 * 0.5
     assert math.whitecap_coverage(0.0) == 0.0
 
 
 def test_the_driver_expression_computes_the_same_coverage():
-    math = load("water.whitecap_math")
+    math = load("water.sea.whitecap_math")
     expression = math.coverage_expression("u")
     for wind in (0.0, 3.0, 5.0, 7.5, 10.0, 15.0, 20.0, 40.0):
         value = eval(expression, {"__builtins__": {}}, {"pow": pow, "min": min, "max": max, "u": wind})

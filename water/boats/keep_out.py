@@ -20,14 +20,15 @@ let go of before the file is saved (`removal.remove_leftovers`).
 import bpy
 import numpy as np
 
-from ..nodes import SPECS
-from ..nodes import keep_out as keep_out_spec
-from ..nodes.builder import ensure_group
-from ..nodes.ownership import is_original, mark, role_of
-from . import dry_mask_math, kind
-from .editable import check_editable
+from ...nodes import SPECS
+from ...nodes import keep_out as keep_out_spec
+from ...nodes.builder import ensure_group
+from ...nodes.ownership import is_original, mark, role_of
+from .. import kind
+from ..editable import check_editable
+from ..values import is_water, water_material
+from . import dry_mask_math
 from .float_rig import footprint_settings
-from .values import is_water, water_material
 
 MIX_NODE = "Water Keep Out"
 TRANSPARENT_NODE = "Water Keep Out Transparent"

@@ -19,19 +19,19 @@ import os
 import bpy
 import numpy as np
 
-from ..nodes import SPECS
-from ..nodes import material as material_spec
-from ..nodes import wake as wake_spec
-from ..nodes.builder import ensure_group
-from ..nodes.ownership import role_of
-from ..presets import schema
+from ...nodes import SPECS
+from ...nodes import material as material_spec
+from ...nodes import wake as wake_spec
+from ...nodes.builder import ensure_group
+from ...nodes.ownership import role_of
+from ...presets import schema
+from ..editable import check_editable
+from ..float_constraints import floating_ancestor, pose_of
+from ..kind import allows, refusal
+from ..values import is_water, read_values, water_material
+from ..waves import SURROUNDINGS_ROLE, get_wave_input, set_wave_input
 from . import footprint_math, keep_out
-from .editable import check_editable
-from .float_constraints import floating_ancestor, pose_of
 from .float_rig import OWNER_KEY, anchor_of, footprint_of, footprint_settings
-from .kind import allows, refusal
-from .values import is_water, read_values, water_material
-from .waves import SURROUNDINGS_ROLE, get_wave_input, set_wave_input
 
 FOAM_MIX = "Water Wake Foam"
 FOAM_SHADER = "Water Wake Foam Shader"

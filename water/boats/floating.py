@@ -13,9 +13,9 @@ or the open sea's Ocean modifier. No Python runs at render.
 import bpy
 from mathutils import Vector
 
-from . import float_rig, kind, physical_caustics, surroundings, wake
-from .editable import check_editable
-from .float_constraints import (
+from .. import kind, physical_caustics, surroundings
+from ..editable import check_editable
+from ..float_constraints import (
     FLOAT,
     TILT,
     float_constraints,
@@ -25,9 +25,10 @@ from .float_constraints import (
     pose_of,
     remember,
 )
-from .float_constraints import constraint as constraint_for
+from ..float_constraints import constraint as constraint_for
+from ..values import is_water
+from . import float_rig, wake
 from .float_rig import footprint_settings
-from .values import is_water
 
 WAKE_BY_FLOAT = "water_surface_wake_by_float"  # on the object: floating added its wake
 

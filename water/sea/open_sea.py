@@ -25,12 +25,13 @@ import math
 import bpy
 import numpy as np
 
-from ..nodes import SPECS, sea_fade
-from ..nodes.builder import ensure_group
-from ..nodes.material import drive_clock, drive_socket
-from ..nodes.ocean_material import ocean_nodes
-from ..nodes.ownership import role_of
-from .editable import check_editable
+from ...nodes import SPECS, sea_fade
+from ...nodes.builder import ensure_group
+from ...nodes.material import drive_clock, drive_socket
+from ...nodes.ocean_material import ocean_nodes
+from ...nodes.ownership import role_of
+from ..editable import check_editable
+from ..waves import set_wave_input
 from .sea_math import (
     FADE_END_TILES,
     FADE_START_TILES,
@@ -52,7 +53,6 @@ from .sea_math import (
     wave_angle,
     wave_scale,
 )
-from .waves import set_wave_input
 from .whitecaps import drive_whitecaps
 
 OCEAN_MODIFIER = "Water Ocean"
@@ -210,7 +210,7 @@ def swell_modifier(obj):
 def swell_values(obj):
     """The swell's values (`SWELL_KEYS`): as last asked, else read back from its modifier (its
     height typical, `SWELL_STD_AT_SCALE_1`); height 0 without a swell."""
-    from ..presets import schema
+    from ...presets import schema
 
     values = {key: schema.BY_KEY[key].default for key in SWELL_KEYS}
     swell = swell_modifier(obj)
@@ -234,7 +234,7 @@ def change_swell(obj, values, scene=None):
     """Changes the open sea `obj`'s swell from `values` (any of `SWELL_KEYS`, from a script, the
     operator or the panel): checked and clamped, the rest kept as they were. Height 0 removes it.
     Returns the change in words. OpenSeaError when `obj` is no open sea."""
-    from ..presets import schema
+    from ...presets import schema
 
     if sea_modifiers(obj) is None:
         raise OpenSeaError(f"'{getattr(obj, 'name', obj)}' is not an open sea")
@@ -337,7 +337,7 @@ def crest_height(obj):
 
 def whitecaps_input(material):
     """The ocean shading's `Whitecaps` input, or None."""
-    from ..nodes.ocean_material import ocean_nodes
+    from ...nodes.ocean_material import ocean_nodes
 
     nodes = ocean_nodes(material)
     return nodes[1].inputs.get("Whitecaps") if nodes else None

@@ -7,7 +7,7 @@ sets Blender's Ocean modifier from them.
 
 import math
 
-from ..nodes.physics import G
+from ...nodes.physics import G
 
 GRAVITY = G
 TILE_WAVES = 6.0

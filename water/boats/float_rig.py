@@ -29,10 +29,11 @@ import math
 import bpy
 import numpy as np
 
-from ..nodes import SPECS, float_patch
-from ..nodes.builder import ensure_group
-from . import footprint_math, waves
-from .float_constraints import PATCH_WATER_KEY, RIG_KEY
+from ...nodes import SPECS, float_patch
+from ...nodes.builder import ensure_group
+from .. import waves
+from ..float_constraints import PATCH_WATER_KEY, RIG_KEY
+from . import footprint_math
 
 RIG_COLLECTION = "Water Float Rigs"
 OWNER_KEY = "water_surface_float_owner"  # on the anchor: the floating object

@@ -7,10 +7,10 @@ import math
 
 import bpy
 
-from ..nodes import sea_fade
-from ..nodes.material import drive_socket
-from ..nodes.ocean_material import ocean_nodes
-from .waves import set_wave_input
+from ...nodes import sea_fade
+from ...nodes.material import drive_socket
+from ...nodes.ocean_material import ocean_nodes
+from ..waves import set_wave_input
 from .whitecap_math import coverage_expression, crest_speed
 
 COVERAGE_INPUT = "Whitecap Coverage"
