@@ -50,7 +50,7 @@ def test_two_objects_selected_and_no_water_both_act_on_the_water_below(scene, op
     _select(*boats)
     assert getattr(bpy.ops.object, operator)() == {"FINISHED"}
     wake = harness.addon("water.boats.wake")
-    assert sorted(s.name for s in wake.wake_sources(water)) == ["Boat 0", "Boat 1"]
+    assert sorted(s.name for s in map(wake.source_of, wake.wake_modifiers(water))) == ["Boat 0", "Boat 1"]
     if operator == "water_float":
         floating = harness.addon("water.float_constraints")
         assert all(floating.floating_on(boat) == water for boat in boats)
@@ -236,7 +236,7 @@ def test_a_hull_and_its_child_float_and_leave_a_wake_without_a_cycle(scene):
     _select(cabin, hull)  # the child first in the selection
     assert bpy.ops.object.water_float() == {"FINISHED"}
     assert floating.floating_on(hull) == water and floating.floating_on(cabin) is None
-    assert [s.name for s in wake.wake_sources(water)] == ["Hull"]
+    assert [s.name for s in map(wake.source_of, wake.wake_modifiers(water))] == ["Hull"]
     with pytest.raises(wake.WakeError, match="rides on 'Hull', which floats"):
         api.add_wake_source(cabin, water)
     float_error = harness.addon("water.boats.floating").FloatError

@@ -124,41 +124,48 @@ class VIEW3D_PT_water_surface(bpy.types.Panel):
         row.menu("WATER_MT_presets", text="Presets", icon="PRESET")
         row.operator("object.water_surface_preset_add", text="", icon="ADD")
         row.operator("object.water_surface_preset_remove", text="", icon="REMOVE")
-
         layout.use_property_split = True
         for title, icon, names in _SECTIONS:
-            box = layout.box()
-            box.label(text=title, icon=icon)
-            for name in names:
-                if name.startswith("part:"):
-                    self.draw_part(box, node, name[len("part:") :])
-                    continue
-                socket = node.inputs[name]
-                if name == "Wind Direction":
-                    col = box.column(align=True)
-                    col.prop(socket, "default_value", index=0, text="Wind X")
-                    col.prop(socket, "default_value", index=1, text="Y")
-                else:
-                    box.prop(socket, "default_value", text=name)
-            if title == "Surroundings":
-                self.draw_surroundings(box, context.active_object)
-            if title == "Caustics":
-                on = physical_caustics.is_on(context.active_object)
-                op = box.operator(
-                    "object.water_physical_caustics",
-                    text=f"Physical Caustics (Cycles): {'On' if on else 'Off'}",
-                    icon="CHECKBOX_HLT" if on else "CHECKBOX_DEHLT",
-                )
-                if op is not None:  # None while the operator's poll refuses (linked water)
-                    op.enable = not on
-            if title == "Glint":
-                sun = glint_sun(material)
-                box.operator(
-                    "object.water_surface_sun_set",
-                    text=f"Sun: {sun.name if sun else 'Default Light'}",
-                    icon="LIGHT_SUN",
-                )
+            self.draw_section(layout.box(), context, material, node, (title, icon, names))
+        self.draw_lake_tail(layout, context, material, node)
 
+    def draw_section(self, box, context, material, node, section):
+        """One box of the lake's inputs, `section` = (title, icon, input names or "part:<name>"),
+        with the box's own button (surroundings, physical caustics, the glint's sun)."""
+        title, icon, names = section
+        box.label(text=title, icon=icon)
+        for name in names:
+            if name.startswith("part:"):
+                self.draw_part(box, node, name[len("part:") :])
+                continue
+            socket = node.inputs[name]
+            if name == "Wind Direction":
+                col = box.column(align=True)
+                col.prop(socket, "default_value", index=0, text="Wind X")
+                col.prop(socket, "default_value", index=1, text="Y")
+            else:
+                box.prop(socket, "default_value", text=name)
+        if title == "Surroundings":
+            self.draw_surroundings(box, context.active_object)
+        if title == "Caustics":
+            on = physical_caustics.is_on(context.active_object)
+            op = box.operator(
+                "object.water_physical_caustics",
+                text=f"Physical Caustics (Cycles): {'On' if on else 'Off'}",
+                icon="CHECKBOX_HLT" if on else "CHECKBOX_DEHLT",
+            )
+            if op is not None:  # None while the operator's poll refuses (linked water)
+                op.enable = not on
+        if title == "Glint":
+            sun = glint_sun(material)
+            box.operator(
+                "object.water_surface_sun_set",
+                text=f"Sun: {sun.name if sun else 'Default Light'}",
+                icon="LIGHT_SUN",
+            )
+
+    def draw_lake_tail(self, layout, context, material, node):
+        """Below the lake's inputs: its bump image, the debug view, its waves and the mirror's state."""
         image = bump_image(material)
         layout.operator(
             "object.water_surface_bump_set",

@@ -65,11 +65,6 @@ def source_of(modifier):
     return owner if owner is not None else source
 
 
-def wake_sources(water):
-    """The objects that leave a wake on `water`."""
-    return [s for s in (source_of(m) for m in wake_modifiers(water)) if s is not None]
-
-
 def modifiers_of(obj):
     """The wake modifiers (on any water) that follow `obj`."""
     return [m for water in bpy.data.objects for m in wake_modifiers(water) if source_of(m) == obj]
