@@ -24,7 +24,7 @@ world's image: the lookup sits between them in the material.
 
 from dataclasses import replace
 
-from . import bump_uv, caustics, foam_map, sea_fade, water_surface
+from . import bump_uv, caustics, foam_map, sea_fade, underside, water_surface
 from .bump_uv import TIME_INPUT
 from .spec import (
     BUMP_IMAGE,
@@ -556,8 +556,9 @@ FULL_SHADE_SPEC = GroupSpec(
     # 2: whitecaps; 3: depth colour, shore foam and caustics from the surroundings; 4: the traced
     # sky and the debug views; 5: whitecaps broken up by the foam tile, as the shore's foam; 6: the
     # caustics an optional part (`PARTS`: older groups have them built in, `retire_legacy_shades`);
-    # 7: seen from below, Snell's window (it was clear)
-    version=7,
+    # 7: seen from below, Snell's window (it was clear); 8: its normal and weights from the one
+    # `Water Underside` group
+    version=8,
     description="Ocean colour: deep blue and the reflected sky by the ocean Fresnel, plus the glint; "
     "white lit foam on the crests; with the surroundings, the bed seen through shallow water, "
     "shore foam and caustics",
@@ -665,20 +666,13 @@ FULL_SHADE_SPEC = GroupSpec(
         ),
         "mix": Node("ShaderNodeMixShader", 32, label="water or foam"),
         # Seen from below by the camera, physics alone (its unlit colour is what the eye sees from
-        # above, not a lamp over the bed): the sky refracted inside Snell's window, the water below
-        # reflected outside it. The Fresnel node takes 1 / IOR on a backface and gives 1 past the
-        # critical angle (total internal reflection). To every other ray (the bed's light bounces
-        # in Cycles) it stays clear, as EEVEE lights the bed: the two engines show the same
-        # shallows.
-        "under_fresnel": Node(
-            "ShaderNodeFresnel", 30, values={"IOR": water_surface.IOR}, label="Fresnel from below"
-        ),
-        "under_clear": math("SUBTRACT", 31, "1 - that", a=1.0),
-        # The normal, turned to face the eye (a mesh's own normal comes turned on a backface, the
-        # waves' worked-out one does not).
-        "under_facing": vmath("DOT_PRODUCT", 28, "eye . n"),
-        "under_sign": math("SIGN", 29, "its sign"),
-        "under_normal": vmath("SCALE", 29, "n, facing the eye"),
+        # above, not a lamp over the bed), the one rule of `Water Underside`: the sky refracted
+        # inside Snell's window at 1 - F, the water below reflected outside it at F, on the normal
+        # turned to face the eye (the waves' worked-out normal is not turned on a backface). The
+        # top side has no glossy to re-weight (it is unlit colour and the bed refracted), so these
+        # two closures are the underside's own. To every other ray (the bed's light bounces in
+        # Cycles) it stays clear, as EEVEE lights the bed: the two engines show the same shallows.
+        "underside": group_node(underside.NAME, 30, "from below: n facing the eye, F, 1 - F"),
         "under_mirror": Node(
             "ShaderNodeBsdfAnisotropic",
             31,
@@ -781,17 +775,11 @@ FULL_SHADE_SPEC = GroupSpec(
         ("foam_glow:Emission", "mix:#2"),
         ("geometry:Backfacing", "sides:Fac"),
         ("mix:Shader", "sides:#1"),
-        ("geometry:Incoming", "under_facing:#0"),
-        ("input:Normal", "under_facing:#1"),
-        ("under_facing:Value", "under_sign:#0"),
-        ("input:Normal", "under_normal:#0"),
-        ("under_sign:Value", "under_normal:Scale"),
-        ("under_normal:Vector", "under_fresnel:Normal"),
-        ("under_fresnel:Fac", "under_clear:#1"),
-        ("under_fresnel:Fac", "under_mirror:Color"),
-        ("under_normal:Vector", "under_mirror:Normal"),
-        ("under_clear:Value", "under_sky:Color"),
-        ("under_normal:Vector", "under_sky:Normal"),
+        ("input:Normal", "underside:Normal"),
+        ("underside:Reflected", "under_mirror:Color"),
+        ("underside:Normal", "under_mirror:Normal"),
+        ("underside:Refracted", "under_sky:Color"),
+        ("underside:Normal", "under_sky:Normal"),
         ("under_mirror:BSDF", "see_through:#0"),
         ("under_sky:BSDF", "see_through:#1"),
         ("light_path:Is Camera Ray", "under_camera:Fac"),

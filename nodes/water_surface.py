@@ -52,15 +52,16 @@ refraction as seen through the water (`T` and the scatter included), so the fina
 picture stays the composition of the views; 6 shows `T` and 7 the foam coverage, unlit.
 
 All of the above is the top side. Seen from below (Geometry > Backfacing) the weights are
-physics alone: the glossy's the Fresnel node's value at IOR 1.33 (it takes 1 / IOR on a
-backface and gives 1 past the critical angle), the refraction's 1 minus it, so the sky shows
-through Snell's window and the water below is mirrored outside it; no emission from below.
+physics alone, the one rule the ocean shares (`underside.py`, `Water Underside`): the glossy's
+the Fresnel node's value F at IOR 1.33 (it takes 1 / IOR on a backface and gives 1 past the
+critical angle), the refraction's 1 - F, so the sky shows through Snell's window and the water
+below is mirrored outside it; the same two closures, no emission from below.
 """
 
 import math as _math
 from dataclasses import replace as _replace
 
-from . import bump_uv, caustics, foam_map, wind_frame
+from . import bump_uv, caustics, foam_map, underside, wind_frame
 from .physics import WATER_IOR
 from .spec import (
     BUMP_IMAGE,
@@ -77,8 +78,8 @@ from .spec import (
 )
 
 NAME = "Water Surface"
-VERSION = 6  # 4: caustics; 5: depth colour, foam and caustics only in the variants that use them;
-# 6: the underside (Snell's window)
+VERSION = 7  # 4: caustics; 5: depth colour, foam and caustics only in the variants that use them;
+# 6: the underside (Snell's window); 7: its weights from the one `Water Underside` group
 LIT_FOAM_SINCE = (4, 5, 0)  # the first LTS whose EEVEE keeps traced refraction beside a diffuse closure
 MAX_BUMP_LAYERS = 4
 FOAM_NAME = "Water Surface Foam Coverage"
@@ -364,15 +365,15 @@ def _emission_nodes():
 
 
 def _underside_nodes():
-    """From below (a backface): Fresnel alone sets the weights, and no emission; either side picked."""
+    """From below (a backface): `Water Underside`'s Fresnel weights alone, and no emission; either
+    side picked."""
     nodes = {
-        # From below (a backface): physics alone. The Fresnel node takes 1 / IOR on a backface
-        # and gives 1 past the critical angle (total internal reflection), so the refraction shows
-        # the sky inside Snell's window and the reflection the water below outside it; no dull
-        # colour, glint or colour by depth (they are the view from above).
-        "fresnel_in": Node("ShaderNodeFresnel", 21, values={"IOR": IOR}, label="Fresnel from below"),
+        # From below (a backface): physics alone, the one rule of `Water Underside` (F reflected,
+        # 1 - F refracted), weighting the same two closures: the refraction shows the sky inside
+        # Snell's window and the reflection the water below outside it; no dull colour, glint or
+        # colour by depth (they are the view from above).
+        "underside": group_node(underside.NAME, 21, "from below: F, 1 - F"),
         "under_reflect": math("MULTIPLY", 22, "from below: reflection"),
-        "under_clear": math("SUBTRACT", 22, "1 - that", a=1.0),
         "under_refract": math("MULTIPLY", 23, "from below: refraction"),
         "w_reflect_s": Node(
             "ShaderNodeMix", 24, {"data_type": "FLOAT"}, label="reflection weight, either side"
@@ -384,11 +385,10 @@ def _underside_nodes():
         "e_above": vmath("SCALE", 26, "emission from above only"),
     }
     links = [
-        ("normal_h:Normal", "fresnel_in:Normal"),
-        ("fresnel_in:Fac", "under_reflect:#0"),
+        ("normal_h:Normal", "underside:Normal"),
+        ("underside:Reflected", "under_reflect:#0"),
         ("final_share:Value", "under_reflect:#1"),
-        ("fresnel_in:Fac", "under_clear:#1"),
-        ("under_clear:Value", "under_refract:#0"),
+        ("underside:Refracted", "under_refract:#0"),
         ("final_share:Value", "under_refract:#1"),
         ("geometry:Backfacing", "w_reflect_s:Factor"),
         ("w_reflect:Value", "w_reflect_s:A"),

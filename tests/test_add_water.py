@@ -83,7 +83,7 @@ def test_adding_water_three_times_reuses_the_group_and_the_bump_image(scene):
     # The default lake has no optional part (depth, foam, caustics) in its shader: no group or
     # tile of theirs is made.
     lake = ["Water Surface", "Water Surface Bump UV", "Water Surface Wind Frame"]
-    lake += ["Water Surroundings", "Water Surroundings Sample"]
+    lake += ["Water Surroundings", "Water Surroundings Sample", "Water Underside"]
     assert groups == lake, "each group once, no .001 (each water has its surroundings)"
     assert sorted(i.name for i in bpy.data.images) == ["Water Surface Bump"]
 

@@ -82,7 +82,12 @@ def test_building_again_reuses_groups_and_image(scene):
     # A new material has no optional part (depth, foam, caustics): neither their groups nor
     # their tiles are made until a value turns one on.
     assert sorted(i.name for i in bpy.data.images) == ["Water Surface Bump"]
-    assert sorted(groups) == ["Water Surface", "Water Surface Bump UV", "Water Surface Wind Frame"]
+    assert sorted(groups) == [
+        "Water Surface",
+        "Water Surface Bump UV",
+        "Water Surface Wind Frame",
+        "Water Underside",
+    ]
     assert _material().water_node(first).node_tree.name == "Water Surface"
     full = _material().water_group(parts=("depth", "foam", "caustics"))
     assert full.name == "Water Surface + Depth + Foam + Caustics"
@@ -132,6 +137,34 @@ def test_older_group_is_upgraded_in_place_keeping_material_values(scene):
     node = _material().water_node(material)
     assert node.inputs["Wave Height"].default_value == pytest.approx(0.7)
     assert node.outputs["Shader"].is_linked
+
+
+def test_lake_and_ocean_see_from_below_by_the_one_underside_group(scene):
+    """Issue 41 point 2: Snell's window is worked out once, in `Water Underside` (the normal
+    turned to face the eye, F and 1 - F by the Fresnel node at water's IOR); the lake (every
+    variant) and the ocean shading each use that group and have no Fresnel node of their own."""
+    physics = harness.addon("nodes.physics")
+    role_of = harness.addon("nodes.ownership").role_of
+    lean = _material().water_group()
+    full = _material().water_group(parts=("depth", "foam", "caustics"))
+    ocean = harness.addon("nodes.ocean_material").make_ocean_material("Ocean", scene=scene)
+    _normal, shade = harness.addon("nodes.ocean_material").ocean_nodes(ocean)
+    undersides = set()
+    for tree in (lean, full, shade.node_tree):
+        users = [n for n in tree.nodes if n.type == "GROUP" and role_of(n.node_tree) == "Water Underside"]
+        assert len(users) == 1, f"{tree.name} uses the underside group once"
+        assert users[0].inputs["Normal"].is_linked
+        assert {link.from_socket.name for link in tree.links if link.from_node == users[0]} >= {
+            "Reflected",
+            "Refracted",
+        }
+        assert not [n.name for n in tree.nodes if n.bl_idname == "ShaderNodeFresnel"], tree.name
+        undersides.add(users[0].node_tree)
+    (underside,) = undersides
+    assert underside.name == "Water Underside"
+    (fresnel,) = [n for n in underside.nodes if n.bl_idname == "ShaderNodeFresnel"]
+    assert fresnel.inputs["IOR"].default_value == pytest.approx(physics.WATER_IOR)
+    assert [s.name for s in _sockets(underside, "OUTPUT")] == ["Normal", "Reflected", "Refracted"]
 
 
 def test_newer_group_is_left_as_it_is(scene):
