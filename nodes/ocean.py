@@ -452,6 +452,16 @@ SHADE_INPUTS = (
         "7 foam and whitecaps, 8 caustics, each unlit (1 and 2: the final picture)",
     ),
     Socket(
+        "Water Fresnel",
+        "NodeSocketFloat",
+        0.0,
+        min=0.0,
+        max=1.0,
+        subtype="FACTOR",
+        tooltip="1: water's own reflectance from its refractive index (2% looking straight down, a mirror "
+        "at grazing: the open sea); 0: the seeds' ocean Fresnel (never under half a mirror)",
+    ),
+    Socket(
         "Traced Sky",
         "NodeSocketFloat",
         0.0,
@@ -557,8 +567,8 @@ FULL_SHADE_SPEC = GroupSpec(
     # sky and the debug views; 5: whitecaps broken up by the foam tile, as the shore's foam; 6: the
     # caustics an optional part (`PARTS`: older groups have them built in, `retire_legacy_shades`);
     # 7: seen from below, Snell's window (it was clear); 8: its normal and weights from the one
-    # `Water Underside` group
-    version=8,
+    # `Water Underside` group; 9: `Water Fresnel` (water's own reflectance, from the same group)
+    version=9,
     description="Ocean colour: deep blue and the reflected sky by the ocean Fresnel, plus the glint; "
     "white lit foam on the crests; with the surroundings, the bed seen through shallow water, "
     "shore foam and caustics",
@@ -567,7 +577,11 @@ FULL_SHADE_SPEC = GroupSpec(
     nodes={
         "geometry": Node("ShaderNodeNewGeometry", 1),
         "cos": vmath("DOT_PRODUCT", 2, "dot(-eye, n)"),
-        "F": math("MULTIPLY_ADD", 3, "F = dot / 2 + 0.5", b=0.5, c=0.5),
+        "F_seeds": math("MULTIPLY_ADD", 3, "the seeds' F = dot / 2 + 0.5", b=0.5, c=0.5),
+        # Water's own (`Water Fresnel`): F = 1 - R, R Fresnel's reflectance at water's IOR, from the
+        # one `Water Underside` group (on the top side its facing normal is n itself).
+        "F_towards": math("SUBTRACT", 3, "water's 1 - R - the seeds'"),
+        "F": math("MULTIPLY_ADD", 3, "F: the seeds' or water's (Water Fresnel)"),
         "one_minus_F": math("SUBTRACT", 4, "1 - F", a=1.0),
         # Through the water: T = exp(-Absorption x path) where the surroundings are measured, else 0
         # (the seeds' ocean, all deep colour); the bed shows at T, the deep colour at 1 - T.
@@ -699,7 +713,12 @@ FULL_SHADE_SPEC = GroupSpec(
     links=(
         ("geometry:Incoming", "cos:#0"),
         ("input:Normal", "cos:#1"),
-        ("cos:Value", "F:#0"),
+        ("cos:Value", "F_seeds:#0"),
+        ("underside:Refracted", "F_towards:#0"),
+        ("F_seeds:Value", "F_towards:#1"),
+        ("F_towards:Value", "F:#0"),
+        ("input:Water Fresnel", "F:#1"),
+        ("F_seeds:Value", "F:#2"),
         ("F:Value", "one_minus_F:#1"),
         *_T_LINKS,
         ("transmit:Vector", "t_seen:#0"),

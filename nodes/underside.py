@@ -12,6 +12,8 @@ they show on a backface (Geometry > Backfacing), so Snell's window is worked out
 * the refracted weight `1 - F`: the sky, refracted, inside the window.
 
 What each shading does with them (which closures they weight) stays its own: see MODEL section 15.
+On the top side the same outputs are water's own Fresnel (the normal is `n` itself, the node takes
+the IOR): the ocean shading's `Water Fresnel` reads its `Refracted`, `1 - R`, there.
 """
 
 from .physics import WATER_IOR

@@ -28,6 +28,7 @@ _OCEAN_INPUTS = (
     ("normal", "Tex Stretch"),
     ("shade", "Deep Color"),
     ("shade", "Glint Power"),
+    ("shade", "Water Fresnel"),  # from version 8 of the shade
     ("shade", "Debug View"),
 )
 # The ocean shading's surroundings inputs (as the lake's): absent from groups before version 3.
@@ -221,7 +222,8 @@ class VIEW3D_PT_water_surface(bpy.types.Panel):
         box.use_property_split = True
         nodes = {"normal": normal, "shade": shade}
         for which, name in _OCEAN_INPUTS:
-            box.prop(nodes[which].inputs[name], "default_value", text=name)
+            if name in nodes[which].inputs:  # an older group lacks the newer inputs
+                box.prop(nodes[which].inputs[name], "default_value", text=name)
 
     def draw_ocean_surroundings(self, layout, obj, material):
         """The ocean's depth colour, shore foam and caustics, and what it measures them against."""
