@@ -88,16 +88,6 @@ def water_with_surroundings(bpy, scene):
     return plane
 
 
-def _lit_material(bpy, name, colour, roughness=0.8):
-    material = bpy.data.materials.new(name)
-    if bpy.app.version < (5, 0, 0):
-        material.use_nodes = True
-    bsdf = material.node_tree.nodes["Principled BSDF"]
-    bsdf.inputs["Base Color"].default_value = (*colour, 1.0)
-    bsdf.inputs["Roughness"].default_value = roughness
-    return material
-
-
 def shore_scene(bpy):
     """The issue 41 scene: a sandy bed rising through the water on one side, four posts standing
     in it, a sun 35° up ahead of the camera, the default lake added by the API over them (so it
@@ -109,11 +99,14 @@ def shore_scene(bpy):
     sun.rotation_euler = (math.radians(55.0), 0.0, math.radians(160.0))
     scene.collection.objects.link(sun)
     bed = harness.add_cube(
-        scene, (0.0, 0.0, -1.0), size=1.0, material=_lit_material(bpy, "Sand", (0.8, 0.7, 0.5))
+        scene,
+        (0.0, 0.0, -1.0),
+        size=1.0,
+        material=harness.lit_material("Sand", (0.8, 0.7, 0.5), roughness=0.8),
     )
     bed.scale = (30.0, 30.0, 0.05)
     bed.rotation_euler = (0.0, -0.12, 0.0)  # rises through the surface at about x = 8 m
-    wood = _lit_material(bpy, "Wood", (0.35, 0.22, 0.12))
+    wood = harness.lit_material("Wood", (0.35, 0.22, 0.12), roughness=0.8)
     for index, x in enumerate((-3.0, -1.0, 1.0, 3.0)):
         post = harness.add_cube(scene, (x, 1.5, 0.0), size=1.0, material=wood, name=f"Post {index + 1}")
         post.scale = (0.2, 0.2, 3.0)

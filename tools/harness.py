@@ -193,6 +193,19 @@ def add_camera(scene, location, target, lens=35.0):
     return camera
 
 
+def lit_material(name, color, roughness=0.5):
+    """A Principled BSDF material of `color` (RGB), lit by the scene."""
+    import bpy
+
+    material = bpy.data.materials.new(name)
+    if bpy.app.version < (5, 0, 0):
+        material.use_nodes = True
+    bsdf = material.node_tree.nodes["Principled BSDF"]
+    bsdf.inputs["Base Color"].default_value = (*color[:3], 1.0)
+    bsdf.inputs["Roughness"].default_value = roughness
+    return material
+
+
 def emission_material(name, color, strength=1.0):
     """An unlit material: renders exactly `color * strength`."""
     import bpy

@@ -25,17 +25,6 @@ DOCS = harness.ROOT / "docs"
 SIZE = (640, 360)
 
 
-def principled(bpy, name, color, roughness=0.5):
-    """A Principled BSDF material of `color` (RGB)."""
-    material = bpy.data.materials.new(name)
-    if bpy.app.version < (5, 0, 0):
-        material.use_nodes = True
-    bsdf = material.node_tree.nodes["Principled BSDF"]
-    bsdf.inputs["Base Color"].default_value = (*color, 1.0)
-    bsdf.inputs["Roughness"].default_value = roughness
-    return material
-
-
 def boat(bpy):
     """A 6 m hull with a cabin, one object, origin at the waterline."""
     bpy.ops.mesh.primitive_cube_add(size=1.0, location=(0.0, 0.0, 0.3))
@@ -49,7 +38,7 @@ def boat(bpy):
     bpy.context.view_layer.objects.active = hull
     bpy.ops.object.transform_apply(scale=True)
     bpy.ops.object.join()
-    hull.data.materials.append(principled(bpy, "Boat", (0.6, 0.12, 0.08)))
+    hull.data.materials.append(harness.lit_material("Boat", (0.6, 0.12, 0.08)))
     hull.name = "Boat"
     hull.location = (3.0, 16.0, 0.0)
     hull.rotation_euler = (0.0, 0.0, math.radians(35.0))
@@ -62,7 +51,7 @@ def island(bpy):
     cone = bpy.context.active_object
     cone.name = "Island"
     cone.location = (-10.0, 50.0, -19.0)
-    cone.data.materials.append(principled(bpy, "Sand", (0.8, 0.62, 0.38), roughness=0.9))
+    cone.data.materials.append(harness.lit_material("Sand", (0.8, 0.62, 0.38), roughness=0.9))
     return cone
 
 
