@@ -2,10 +2,11 @@
 
 `Water Ocean Normal` perturbs the wave normal (the `water_normal` attribute the
 `Water Waves` modifier stores, or the surface normal without it) by three taps
-of the bump map and gives the direction the eye reflects into. The material
-looks the sky up in that direction (the world's environment image, or its
-colour) and hands it to `Water Ocean Shade` (any other world the shade's "+ Traced Sky" variant
-reflects with a Glossy closure instead):
+of the bump map and gives the direction the eye reflects into. The shade's "+ Traced Sky"
+variant, every new material's, has the renderer reflect the world there with a Glossy closure, so
+the sea shows whatever world the scene has now; at `Traced Sky` 0 the material looks the sky up
+in that direction as the seeds do (the world's environment image, or its colour, as they were
+when it was made) and hands it to `Water Ocean Shade`:
 `F = dot(-eye, n) / 2 + 0.5`, `deep * F + sky * (1 - F) + pow(mean(sky), Glint Power)`,
 unlit, as the seeds draw it. Where the mesh carries crest foam (the open sea's
 `water_whitecaps`, `sea_fade.py`) whitecaps break out as white foam lit by the scene, the foam
@@ -468,8 +469,9 @@ SHADE_INPUTS = (
         min=0.0,
         max=1.0,
         subtype="FACTOR",
-        tooltip="1: the renderer reflects the world, whatever it is (Sky Texture, gradient, image), and "
-        "the sun's own glint, as on the lake; 0: the Sky input (the world's image looked up, as the seeds)",
+        tooltip="1: the renderer reflects the world the scene has now, whatever it is (an image, Sky "
+        "Texture, a gradient), and the sun's own glint, as on the lake; 0: the Sky input (the world's "
+        "image or colour looked up as the seeds do, as it was when the water was added)",
     ),
 )
 TRACED_SKY = "Traced Sky"
@@ -487,7 +489,7 @@ DEBUG_VIEWS = (
     (8, "caustic factor"),
 )
 # The traced sky: a sharp Glossy closure at (1 - F) in place of the Sky input's colour. Built
-# only into the group's "+ Traced Sky" variant (a material whose world has no image takes it).
+# only into the group's "+ Traced Sky" variant (every new material's: issue 38, the world live).
 # The caustics on the bed (`caustics.py`): built only into the "+ Caustics" variants, while
 # Caustics is above 0. Without them the bed is lit by the factor 1 (no caustics), as the lake's.
 PARTS = (

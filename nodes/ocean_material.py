@@ -2,13 +2,15 @@
 direction, and the ocean colour (groups in `ocean.py`), with the open sea's
 whitecaps where the mesh carries them.
 
-The sky is the world's environment image when it has one (an Environment
-Texture node in the material, as the seeds sample their sky cube), or its one colour when it is
-plain. Any other world (Blender's Sky Texture, a gradient) is reflected by the renderer itself: the shade's
-"+ Traced Sky" variant adds a sharp Glossy closure at the sky's weight, so every wave shows
-whatever the sky is, in EEVEE and Cycles. A plain colour is followed by simple-expression
-drivers (the Sky node), so a changed colour shows without running anything. The shade's clock and sun (for the
-surroundings' foam and caustics) are drivers too, as the lake's.
+The sky is reflected by the renderer itself: the shade's "+ Traced Sky" variant adds a sharp
+Glossy closure at the sky's weight, so every wave shows whatever world the scene has now (an
+HDRI, a swapped image, Sky Texture, a gradient, an edited colour, another world), in EEVEE and
+Cycles, with nothing to press: a copy of the world made when the material is could not follow
+it (issue 38). The seeds' own look-up stays beside it for `Traced Sky` 0: the Sky node, the
+world's environment image when it has one (an Environment Texture node in the material, as the
+seeds sample their sky cube) or its one colour (followed by simple-expression drivers), as the
+world was when the material was made. The shade's clock and sun (for the surroundings' foam and
+caustics) are drivers too, as the lake's.
 """
 
 import itertools
@@ -44,19 +46,6 @@ def _world_environment(world):
         (n for n in world.node_tree.nodes if n.type == "TEX_ENVIRONMENT" and n.image is not None),
         None,
     )
-
-
-def _plain_world(world):
-    """Whether `world` is one colour in every direction (no world, no nodes, or a Background
-    whose colour nothing feeds): the Sky node's driven colour is then exactly what it reflects."""
-    if world is None or world.node_tree is None:
-        return True
-    backgrounds = [n for n in world.node_tree.nodes if n.type == "BACKGROUND"]
-    output = next((n for n in world.node_tree.nodes if n.type == "OUTPUT_WORLD"), None)
-    if output is None or not output.inputs["Surface"].is_linked:
-        return True
-    feeding = output.inputs["Surface"].links[0].from_node
-    return feeding in backgrounds and not feeding.inputs["Color"].is_linked
 
 
 def _sky_node(tree, world):
@@ -120,10 +109,8 @@ def make_ocean_material(name="Ocean", scene=None):
     scene = scene or bpy.context.scene
     retire_legacy_shades()
     normal_group = ensure_group(SPECS[ocean.NORMAL_NAME], SPECS, image=ensure_bump_image())
-    # A world with an image is looked up as the seeds look their sky cube up; any other world
-    # (Sky Texture, a gradient) is reflected by the renderer (the traced sky); a plain colour is exact.
-    traced = _world_environment(scene.world) is None and not _plain_world(scene.world)
-    shade_group = ensure_group(ocean.FULL_SHADE_SPEC.variant({"traced_sky"} if traced else ()), SPECS)
+    # Whatever the world is, now or later, the renderer reflects it (the traced sky).
+    shade_group = ensure_group(ocean.FULL_SHADE_SPEC.variant({"traced_sky"}), SPECS)
     material = new_node_material(name)
     tree = material.node_tree
     normal = tree.nodes.new("ShaderNodeGroup")
@@ -132,7 +119,7 @@ def make_ocean_material(name="Ocean", scene=None):
     sky.name, sky.label, sky.location = SKY_NODE, "sky in the reflected direction", (-300, -150)
     shade = tree.nodes.new("ShaderNodeGroup")
     shade.node_tree, shade.name, shade.location, shade.width = shade_group, OCEAN_NODE, (0, 0), 220
-    shade.inputs[ocean.TRACED_SKY].default_value = 1.0 if traced else 0.0
+    shade.inputs[ocean.TRACED_SKY].default_value = 1.0
     output = tree.nodes.new("ShaderNodeOutputMaterial")
     output.location = (300, 0)
     tree.links.new(normal.outputs["Normal"], shade.inputs["Normal"])

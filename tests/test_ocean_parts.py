@@ -33,7 +33,7 @@ def _has_caustics(water):
 def test_the_default_open_sea_has_no_caustics_in_its_shade(scene):
     sea = _api().add_water(scene, preset="open_sea", resolution=33, name="Sea").object
     tree = _shade(sea).node_tree
-    assert tree.name == "Water Ocean Shade"
+    assert tree.name == "Water Ocean Shade + Traced Sky"
     assert not any(node.type == "GROUP" and "Caustics" in node.node_tree.name for node in tree.nodes)
     assert _api().read_values(sea)["caustics"] == 0.0
 
@@ -41,7 +41,7 @@ def test_the_default_open_sea_has_no_caustics_in_its_shade(scene):
 def test_caustics_come_and_go_with_their_value_keeping_every_other(scene):
     sea = _api().add_water(scene, preset="open_sea", resolution=33, caustics=0.8, name="Sea").object
     assert _has_caustics(sea)
-    assert _shade(sea).node_tree.name == "Water Ocean Shade + Caustics"
+    assert _shade(sea).node_tree.name == "Water Ocean Shade + Traced Sky + Caustics"
     _api().write_values(sea, {"foam_width": 2.5})
     assert _has_caustics(sea)
     _api().write_values(sea, {"caustics": 0.0})
@@ -78,7 +78,8 @@ def test_repair_keeps_the_caustics_variant(scene):
 
 def test_an_old_files_shade_keeps_its_caustics_and_its_materials(scene):
     """A `Water Ocean Shade` group as version 5 saved it: caustics built in, the lean group's role
-    and name. The updated add-on gives it the caustics variant's; a new sea gets the lean group."""
+    and name. The updated add-on gives it the caustics variant's; a new sea gets the group without
+    caustics (with the traced sky, every new sea's)."""
     old = _api().add_water(scene, preset="open_sea", resolution=33, caustics=0.7, name="Old Sea").object
     legacy = _shade(old).node_tree
     ownership = harness.addon("nodes.ownership")
@@ -91,7 +92,7 @@ def test_an_old_files_shade_keeps_its_caustics_and_its_materials(scene):
     assert _shade(old).node_tree == legacy, "the old material keeps its group"
     assert legacy.name == "Water Ocean Shade + Caustics"
     assert ownership.role_of(legacy) == legacy.name
-    assert _shade(new).node_tree.name == "Water Ocean Shade"
+    assert _shade(new).node_tree.name == "Water Ocean Shade + Traced Sky"
     assert not _has_caustics(new)
     assert _shade(old).inputs["Caustics"].default_value == pytest.approx(0.7)
 

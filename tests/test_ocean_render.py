@@ -4,7 +4,8 @@ With the bump taps off (Bump Strength 0), every pixel is predictable: the ray
 meets the wave surface, whose analytic normal gives `F = dot(-eye, n) / 2 + 0.5`
 and the colour `deep * F + sky * (1 - F) + mean(sky) ** 30`.
 
-With the taps on, under a bright sky image, numpy also samples the packed bump
+With the taps on, under a bright sky image looked up as the seeds do (`Traced Sky` 0; by
+default the renderer reflects the world, test_live_sky.py), numpy also samples the packed bump
 image three times per pixel as the node does (bilinear, repeating), tilts the
 wave normal through its tangent frame, and looks the sky image up in the
 reflected direction, where `mean(sky) ** 30` is a glint of 1.5 to 5.
@@ -212,7 +213,8 @@ def bright_sea(addon, eevee):
     sky = _bright_sky_world(scene)  # first: the ocean material takes the world's image when made
     bpy.ops.object.water_surface_add(preset="ocean", size=OCEAN_SIZE, resolution=241)
     ocean = bpy.context.active_object
-    normal, _shade = harness.addon("nodes.ocean_material").ocean_nodes(ocean.active_material)
+    normal, shade = harness.addon("nodes.ocean_material").ocean_nodes(ocean.active_material)
+    shade.inputs["Traced Sky"].default_value = 0.0  # the seeds' own look-up of their sky, and its glint
     normal.inputs["Bump Strength"].default_value = BUMP_STRENGTH
     normal.inputs["Tex Stretch"].default_value = TEX_STRETCH
     image = normal.node_tree.nodes["tap_1"].image  # the packed bump image the taps sample

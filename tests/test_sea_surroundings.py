@@ -166,7 +166,7 @@ def renders(shore, tmp_path_factory):
     shade = harness.addon("nodes.ocean_material").ocean_nodes(sea.active_material)[1]
     ocean, nodes = harness.addon("nodes.ocean"), harness.addon("nodes")
     built_in = harness.addon("nodes.builder").ensure_group(
-        ocean.FULL_SHADE_SPEC.variant({"caustics"}), nodes.SPECS
+        ocean.FULL_SHADE_SPEC.variant({"traced_sky", "caustics"}), nodes.SPECS
     )
     assert shade.node_tree == built_in, "caustics on: the variant with them"
     before = shade.inputs["Caustics"].default_value
@@ -270,10 +270,12 @@ def test_caustics_at_zero_render_as_the_shade_without_them(shore, renders):
 
 @pytest.mark.render
 def test_cycles_shows_the_same_shallows(shore, renders):
-    """The same frame in Cycles (16 samples, not denoised): over bands of depth, the mean colour
+    """The same frame in Cycles (16 samples, not denoised): over bands of depth, the median colour
     per channel as EEVEE's within 0.03 (measured, the channel that differs most: 0.011, 0.012,
     0.020 on 5.2.3); the per-pixel difference, the caustics' lines and the samples' noise in it,
-    is printed."""
+    is printed. The median, as the sun glitters in the reflected sky (the traced sky): a few
+    pixels of 1 to 55 (8 in Cycles' 16 samples over the shallowest band, 1 in EEVEE's 2), which
+    move a band's mean by up to 0.08 at random (measured medians: within 0.019)."""
     scene = shore["scene"]
     engine = scene.render.engine
     scene.render.engine = "CYCLES"
@@ -287,10 +289,15 @@ def test_cycles_shows_the_same_shallows(shore, renders):
     depth = -_bed_z(x)
     for low, high in ((0.5, 2.0), (2.0, 5.0), (6.0, 8.0)):
         band = inside & (depth > low) & (depth < high)
-        eevee_mean, cycles_mean = renders["made"][band].mean(axis=0), cycles[band].mean(axis=0)
-        per_pixel = float(np.abs(cycles - renders["made"])[band].mean())
+        eevee_mean = np.median(renders["made"][band], axis=0)
+        cycles_mean = np.median(cycles[band], axis=0)
+        per_pixel = float(np.median(np.abs(cycles - renders["made"])[band]))
+        glints = (
+            int((cycles[band].mean(axis=-1) > 1.0).sum()),
+            int((renders["made"][band].mean(axis=-1) > 1.0).sum()),
+        )
         print(
-            f"{low:g}-{high:g} m: EEVEE {eevee_mean.round(3)}, Cycles {cycles_mean.round(3)}; "
-            f"per pixel {per_pixel:.3f}"
+            f"{low:g}-{high:g} m: EEVEE {eevee_mean.round(3)}, Cycles {cycles_mean.round(3)} (medians); "
+            f"per pixel {per_pixel:.3f}; glints over 1 (Cycles, EEVEE): {glints}"
         )
         assert np.abs(eevee_mean - cycles_mean).max() < 0.03
