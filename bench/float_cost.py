@@ -2,11 +2,12 @@
 
 The `open_sea` preset (12 m/s, an 8 s swell, 385 x 385 points) alone, with one empty on a
 Shrinkwrap constraint onto it (how objects floated by their origin before: Blender builds the
-sea's ray-cast tree each frame), with a 25 x 6 x 4 m hull floating by its footprint (21 probes
-dropped onto its patch of the sea, `water/boats/float_rig.py`), and with ten of them. Milliseconds a
-frame over 24 frames (`frame_set`), in 5 interleaved rounds; ratios to the water alone, round by
-round, median and range. Run with `tools/bench float_cost`; `tools/bench float_cost --water=lake`
-(a 300 m lake at 0.5 m with its waves) or `--water=ocean` (the seeds' ocean) for the others.
+sea's ray-cast tree each frame), with a 25 x 6 x 4 m hull floating by its footprint (its rig, an
+anchor and a pose whose modifier fits the plane, `water/boats/float_rig.py`), and with ten of
+them. Milliseconds a frame over 24 frames (`frame_set`), in 5 interleaved rounds; ratios to the
+water alone, round by round, median and range. Run with `tools/bench float_cost`;
+`tools/bench float_cost --water=lake` (a 300 m lake at 0.5 m with its waves) or `--water=ocean`
+(the seeds' ocean) for the others.
 """
 
 import statistics
@@ -77,7 +78,7 @@ def main():
     cases = {
         "the water alone": (),
         "+ one Shrinkwrap onto it (floating by the origin)": (probe,),
-        "+ a hull floating by its footprint (its rig: 23 empties and its patch)": tuple(fleet[0]),
+        "+ a hull floating by its footprint (its rig: an anchor and a pose)": tuple(fleet[0]),
         "+ ten hulls floating by their footprints": tuple(o for boat in fleet for o in boat),
     }
     extras = [probe, *(o for boat in fleet for o in boat)]

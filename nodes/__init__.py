@@ -7,7 +7,7 @@ This package's descriptions (`SPECS`) are plain data and import without Blender;
 from . import (
     bump_uv,
     caustics,
-    float_patch,
+    float_fit,
     keep_out,
     ocean,
     sea_fade,
@@ -35,7 +35,7 @@ SPECS = {
         surroundings.SAMPLE_SPEC,
         keep_out.SPEC,
         wake.SPEC,
-        float_patch.SPEC,
+        float_fit.SPEC,
     )
 }
 

@@ -22,7 +22,7 @@ import math
 import bpy
 import numpy as np
 import pytest
-from mathutils import Vector
+from mathutils import Euler, Vector
 
 import harness
 
@@ -161,8 +161,8 @@ def test_waves_a_quarter_hull_long_hardly_pitch_it(scene):
 
 
 def test_on_the_wind_sea_it_pitches_as_its_footprint_and_is_driven_without_python(scene):
-    """The wind's sea (10 m/s, crossing the swell) on as well; the rig's drivers are all simple
-    expressions (Blender evaluates them without Python, auto-run off)."""
+    """The wind's sea (10 m/s, crossing the swell) on as well; the rig has no driver at all: a
+    Geometry Nodes modifier fits the plane, and the hull follows it by two constraints."""
     sea = _sea(scene, period=8.0, wind_sea=True, wind=10.0)
     hull = _hull(scene)
     _api().float_on_water(hull, sea, draft=DRAFT)
@@ -177,8 +177,13 @@ def test_on_the_wind_sea_it_pitches_as_its_footprint_and_is_driven_without_pytho
         for curve in obj.animation_data.drivers
         if obj.get("water_surface_float_rig")
     ]
-    assert len(drivers) == 3
-    assert all(driver.is_simple_expression for driver in drivers)
+    assert drivers == []
+    pose = harness.addon("water.boats.floating").pose_of(hull)
+    assert [m.node_group.name for m in pose.modifiers] == ["Water Float Fit"]
+    assert sorted((c.type, c.target, c.subtarget) for c in hull.constraints) == [
+        ("COPY_LOCATION", pose, "Water Float Pose"),
+        ("COPY_ROTATION", pose, "Water Float Pose"),
+    ]
 
 
 @pytest.mark.lts  # actions with slots from 4.4, without before
@@ -188,10 +193,18 @@ def _yaw(matrix):
     return math.atan2(x_axis.y, x_axis.x)
 
 
-def _probes_axis(probes, depsgraph):
+def _probes(hull, depsgraph):
+    """The world positions of the probes of `hull`'s rig, where they dropped onto the water: the
+    points of its pose's evaluated mesh other than its triangle (the last three)."""
+    pose = harness.addon("water.boats.floating").pose_of(hull).evaluated_get(depsgraph)
+    points = np.array([pose.matrix_world @ v.co for v in pose.data.vertices])
+    return points[:-3]
+
+
+def _probes_axis(hull, depsgraph):
     """(centre (x, y), the heading of the probes' long axis on the plane, radians, modulo pi):
     the principal axis of their world positions, as laid over the footprint's length."""
-    xy = np.array([p.evaluated_get(depsgraph).matrix_world.translation[:2] for p in probes])
+    xy = _probes(hull, depsgraph)[:, :2]
     centre = xy.mean(axis=0)
     _u, _s, rows = np.linalg.svd(xy - centre)
     return centre, math.atan2(rows[0][1], rows[0][0])
@@ -202,11 +215,11 @@ def _turn_apart(a, b, period=2.0 * math.pi):
     return math.degrees(abs((a - b + period / 2.0) % period - period / 2.0))
 
 
-def _follows(hull, probes, depsgraph, want_xy, want_yaw, label):
+def _follows(hull, depsgraph, want_xy, want_yaw, label):
     """The floating hull's heading is the one it has without floating, and its probes lie along
     it round its origin: a rig that never turned (or turned the other way) fails here."""
     matrix = hull.evaluated_get(depsgraph).matrix_world
-    centre, axis = _probes_axis(probes, depsgraph)
+    centre, axis = _probes_axis(hull, depsgraph)
     yaw_off = _turn_apart(_yaw(matrix), want_yaw)
     axis_off = _turn_apart(axis, want_yaw, math.pi)
     print(
@@ -231,13 +244,12 @@ def test_it_follows_the_hull_moving_and_turning_by_keys_added_after_it_floated(s
     hull.rotation_euler = (0.0, 0.0, YAW + 0.8)
     hull.keyframe_insert("location", frame=97)
     hull.keyframe_insert("rotation_euler", frame=97)
-    probes = [o for o in bpy.data.objects if o.get("water_surface_float_rig") == "probe"]
     # Two keys with auto-clamped handles: halfway in time is halfway in value.
     for frame, share in ((1, 0.0), (49, 0.5), (97, 1.0)):
         scene.frame_set(frame)
         depsgraph = bpy.context.evaluated_depsgraph_get()
         want = (14.0 + 26.0 * share, -9.0 + 25.0 * share)
-        _follows(hull, probes, depsgraph, want, YAW + 0.8 * share, f"frame {frame}")
+        _follows(hull, depsgraph, want, YAW + 0.8 * share, f"frame {frame}")
     assert harness.addon("water.boats.floating").rig_out_of_date(hull) is None
 
 
@@ -252,10 +264,10 @@ def test_stop_a_copy_and_a_deleted_hull_leave_nothing_behind(scene, tmp_path):
     sea = _sea(scene, period=8.0)
     hull = _hull(scene)
     _api().float_on_water(hull, sea, draft=DRAFT)
-    assert len(_rig_objects()) == 24  # anchor, patch, pose, 21 probes
+    assert len(_rig_objects()) == 2  # the anchor and the pose
     assert _api().stop_floating(hull) == ["'Hull' no longer floats", "'Hull' leaves no wake on 'Sea'"]
     assert _rig_objects() == [] and not hull.constraints
-    assert not [m for m in bpy.data.meshes if "Float Patch" in m.name], "the patch's mesh went too"
+    assert not [m for m in bpy.data.meshes if "Float Pose" in m.name], "the pose's mesh went too"
     assert not harness.addon("water.boats.wake").wake_modifiers(sea), "the wake floating added went too"
     assert hull.animation_data is None or hull.animation_data.action is None
     assert "Water Float Rigs" not in bpy.data.collections
@@ -266,9 +278,9 @@ def test_stop_a_copy_and_a_deleted_hull_leave_nothing_behind(scene, tmp_path):
     floating = harness.addon("water.boats.floating")
     assert "a copy" in floating.rig_out_of_date(copy)
     _api().float_on_water(copy, sea)
-    assert len(_rig_objects()) == 48 and floating.rig_out_of_date(hull) is None
+    assert len(_rig_objects()) == 4 and floating.rig_out_of_date(hull) is None
     _api().stop_floating(copy)
-    assert len(_rig_objects()) == 24 and floating.rig_out_of_date(hull) is None
+    assert len(_rig_objects()) == 2 and floating.rig_out_of_date(hull) is None
 
     bpy.data.objects.remove(hull)
     path = tmp_path / "deleted.blend"
@@ -276,7 +288,7 @@ def test_stop_a_copy_and_a_deleted_hull_leave_nothing_behind(scene, tmp_path):
     assert _rig_objects() == []
     bpy.ops.wm.open_mainfile(filepath=str(path))
     assert _rig_objects() == [] and "Water Float Rigs" not in bpy.data.collections
-    assert not [m for m in bpy.data.meshes if "Float Patch" in m.name]
+    assert not [m for m in bpy.data.meshes if "Float Pose" in m.name]
 
 
 @pytest.mark.lts
@@ -380,8 +392,6 @@ def test_it_follows_a_hull_carried_by_a_parent_or_a_follow_path(scene):
         twins[hull] = twin
     for hull in (carried, led):
         _api().float_on_water(hull, sea, draft=DRAFT)
-    rig = harness.addon("water.boats.float_rig")
-    floating = harness.addon("water.boats.floating")
     turned = {}
     for frame in (1, 20, 49):
         scene.frame_set(frame)
@@ -389,8 +399,7 @@ def test_it_follows_a_hull_carried_by_a_parent_or_a_follow_path(scene):
         for hull in (carried, led):
             twin = twins[hull].evaluated_get(depsgraph).matrix_world
             turned.setdefault(hull, []).append(_yaw(twin))
-            probes = rig.probes_of(floating.pose_of(hull))
-            _follows(hull, probes, depsgraph, twin.translation.xy, _yaw(twin), f"frame {frame}, {hull.name}")
+            _follows(hull, depsgraph, twin.translation.xy, _yaw(twin), f"frame {frame}, {hull.name}")
     for hull, yaws in turned.items():  # the twins did turn: the check above saw a turn
         assert _turn_apart(yaws[0], yaws[-1]) > 40.0, (hull.name, yaws)
 
@@ -407,12 +416,46 @@ def _poses(scene, hull, frames):
     return np.array(found)
 
 
+def _dropped(water, point, depsgraph):
+    """The world height where a probe at `point` drops onto the evaluated water, straight down or
+    up, the nearer hit (a Shrinkwrap constraint projecting both ways); its own height if none."""
+    evaluated = water.evaluated_get(depsgraph)
+    inverse = evaluated.matrix_world.inverted()
+    start = inverse @ point
+    hits = []
+    for direction in ((0.0, 0.0, -1.0), (0.0, 0.0, 1.0)):
+        local = (inverse.to_3x3() @ Vector(direction)).normalized()
+        hit, location, _normal, _index = evaluated.ray_cast(start, local)
+        if hit:
+            hits.append(evaluated.matrix_world @ location)
+    return min(hits, key=lambda at: (at - point).length).z if hits else point.z
+
+
+def _plane_pose(hull, water, depsgraph):
+    """(origin height, rotation matrix) the hull should have: the rig's own maths done here, the
+    footprint's 21 probes (`footprint_math`, moving with the anchor) dropped onto the water by
+    ray casts, the plane fitted to their heights by its weights, the heave less the draft and
+    the keel, the tilt (X by atan(slope y), Y by -atan(slope x)) after the anchor's rotation."""
+    rig = harness.addon("water.boats.float_rig")
+    footprint = harness.addon("water.boats.footprint_math")
+    anchor = rig.anchor_of(harness.addon("water.boats.floating").pose_of(hull))
+    matrix = anchor.evaluated_get(depsgraph).matrix_world
+    points = footprint.probe_grid(HULL[0], HULL[1])
+    heights = [_dropped(water, matrix @ Vector((x, y, 0.0)), depsgraph) for x, y, _w in points]
+    plane = np.array(footprint.plane_weights(points)).T @ np.array(heights)
+    tilt = Euler((math.atan(plane[2]), -math.atan(plane[1]), 0.0), "XYZ").to_matrix()
+    return plane[0] - DRAFT + HULL[2] / 2.0, matrix.to_3x3().normalized() @ tilt
+
+
 @pytest.mark.parametrize("kind", ["open sea, wind sea", "lake with waves", "seeds' ocean"])
-def test_the_probes_on_their_patch_ride_as_on_the_whole_water(scene, kind):
-    """Issue 39: the probes drop onto a patch of the water round the hull (its ray-cast tree a
-    few hundred triangles, not the whole sea's), and the hull heaves, rolls and pitches as it
-    did on the whole water, within 1 cm and 0.1°: a hull running and turning across choppy
-    waves, on a turned water, its probes then dropped onto the water itself."""
+def test_the_fit_on_its_patch_is_the_probes_plane_as_on_the_whole_water(scene, kind):
+    """Issue 39: one Geometry Nodes modifier fits the plane (`Water Float Fit`) from the water
+    round the hull only (a patch: on an even grid a block of 4 x 4 points round each probe, not
+    the whole sea's ray-cast tree), and the hull heaves, rolls and pitches as the footprint's
+    probes dropped onto the water by ray casts say (the rig's maths done in Python, as the
+    Shrinkwrap probes and drivers did it before) within 1 mm and 0.01°, and as with its probes
+    dropped onto the whole water within 1 cm and 0.1°: a hull running and turning across
+    choppy waves, on a turned water."""
     if kind == "open sea, wind sea":
         water = _sea(scene, period=8.0, wind_sea=True)
     else:
@@ -430,27 +473,28 @@ def test_the_probes_on_their_patch_ride_as_on_the_whole_water(scene, kind):
         hull.keyframe_insert("location", frame=frame)
         hull.keyframe_insert("rotation_euler", frame=frame)
     _api().float_on_water(hull, water, draft=DRAFT, wake=False)
-    probes = [o for o in bpy.data.objects if o.get("water_surface_float_rig") == "probe"]
-    (patch,) = {c.target for p in probes for c in p.constraints if c.type == "SHRINKWRAP"}
-    assert patch.get("water_surface_float_rig") == "patch"
     frames = (1, 13, 25, 37, 49)
+    heave_off, turn_off = [], []
+    for frame in frames:
+        scene.frame_set(frame)
+        depsgraph = bpy.context.evaluated_depsgraph_get()
+        matrix = hull.evaluated_get(depsgraph).matrix_world
+        height, rotation = _plane_pose(hull, water, depsgraph)
+        heave_off.append(abs(matrix.translation.z - height))
+        turn_off.append(
+            math.degrees(rotation.to_quaternion().rotation_difference(matrix.to_quaternion()).angle)
+        )
     on_patch = _poses(scene, hull, frames)
-    depsgraph = bpy.context.evaluated_depsgraph_get()
-    triangles = len(patch.evaluated_get(depsgraph).data.loop_triangles)
-    all_triangles = len(water.evaluated_get(depsgraph).data.loop_triangles)
-    for probe in probes:
-        probe.constraints["Water Float Probe"].target = water
+    fit = harness.addon("water.boats.float_rig").fit_modifier(
+        harness.addon("water.boats.floating").pose_of(hull)
+    )
+    harness.addon("water.waves").set_wave_input(fit, "On Patch", False)
     on_water = _poses(scene, hull, frames)
     off = np.abs(on_patch - on_water)
     print(
-        kind,
-        "patch:",
-        triangles,
-        "triangles; off by",
-        off.max(axis=0),
-        "(m, °, °); moved",
-        np.ptp(on_water, axis=0),
+        f"{kind}: off the probes' plane by {max(heave_off) * 1000:.3f} mm, {max(turn_off):.4f}°; off the "
+        f"whole water's by {off.max(axis=0)} (m, °, °); moved {np.ptp(on_water, axis=0)}"
     )
-    assert triangles < 0.2 * all_triangles
+    assert max(heave_off) < 0.001 and max(turn_off) < 0.01
     assert off[:, 0].max() < 0.01 and off[:, 1:].max() < 0.1
     assert np.ptp(on_water[:, 0]) > 0.05 and np.ptp(on_water[:, 1:]).max() > 1.0  # the water moved it

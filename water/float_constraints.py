@@ -14,7 +14,7 @@ Shrinkwrap, named as the add-on named them and aiming at the same water.
 from .values import is_water
 
 RIG_KEY = "water_surface_float_rig"  # on a rig's objects (float_rig.py): "pose", "probe", "patch", ...
-PATCH_WATER_KEY = "water_surface_float_water"  # on a rig's patch: the water it is cut from
+PATCH_WATER_KEY = "water_surface_float_water"  # on a rig's pose (or older patch): its water
 _KINDS = {"float": ("SHRINKWRAP", "COPY_LOCATION"), "tilt": ("SHRINKWRAP", "COPY_ROTATION")}
 
 FLOAT = "Water Float"
@@ -89,6 +89,9 @@ def water_of(target):
         return None
     if target.get(RIG_KEY) != "pose":
         return target if is_water(target) else None
+    fitted = target.get(PATCH_WATER_KEY)  # a pose that fits its own plane names its water
+    if fitted is not None:
+        return fitted if is_water(fitted) else None
     animation = target.animation_data
     for curve in animation.drivers if animation else ():
         for variable in curve.driver.variables:

@@ -4,24 +4,26 @@ For a floating object the add-on makes, in a hidden collection `RIG_COLLECTION`:
 
 * an anchor: an empty that moves as the object itself moves before it floats: the same parent,
   transform and action (shared, so keys added to the object later move it too) and copies of the
-  object's own constraints (a Follow Path). The probes cannot follow the object itself: Blender
-  makes any reading of an object's transform wait for all its constraints, the float's too, so
-  probes placed from the object would close a dependency cycle;
-* probes: empties parented to the anchor over the object's footprint (`footprint_math`), each
-  dropped onto the water's evaluated surface, straight down or up, by a Shrinkwrap constraint:
-  onto a patch of it, a hidden mesh with the water's transform whose `Water Float Patch`
-  modifier keeps the water's evaluated surface round the anchor only (a Shrinkwrap builds a
-  ray-cast tree of all its target's mesh every frame: the whole sea's cost 4.65x the sea alone);
-* a pose: an empty whose Z is where the origin belongs (the plane fitted to the probes' heights,
-  at the origin, less the keel's depth below the origin and the draft) and whose X and Y
-  rotations are that plane's tilt in the object's own axes, by simple-expression drivers that
-  read the probes' world Z.
+  object's own constraints (a Follow Path). The pose cannot follow the object itself: Blender
+  makes any reading of an object's transform wait for all its constraints, the float's too, so a
+  pose placed from the object would close a dependency cycle;
+* a pose: a hidden mesh whose `Water Float Fit` modifier (`nodes/float_fit.py`) does the rest
+  each frame: its own points are the probes over the object's footprint (`footprint_math`), in
+  the anchor's own space, each with its weights for the fitted plane; the modifier drops them
+  onto the water's evaluated surface, straight down or up, onto a patch of it round them only
+  (a ray-cast tree of all the sea's mesh would cost 4.65x the sea alone), fits the plane to
+  their heights and lays the pose's triangle (the vertex group `float_fit.POSE_GROUP`) on it
+  over the anchor: its mean height where the origin belongs (the plane at the origin, less the
+  keel's depth below the origin and the draft), its normal the plane's tilt in the object's own
+  axes.
 
-The object takes its height from the pose (Copy Location, world Z only) and its tilt (Copy
-Rotation, after its own: about its own axes) at 1 - tilt damping. Nothing runs Python at render,
-so a saved file floats the same without the add-on. The rig's empties carry `RIG_KEY` (their
-role); the anchor also names its object (`OWNER_KEY`), so a rig whose object was deleted is
-found and removed (`remove_lost_rigs`).
+The object takes its height from the triangle (Copy Location, world Z only) and its tilt (Copy
+Rotation, after its own: about its own axes) at 1 - tilt damping, both with the vertex group as
+subtarget. Two objects a hull, where rigs made before had 24 (21 Shrinkwrap probe empties, a
+patch, three drivers of 21 variables: about 2 ms a hull; `remove` still takes those apart).
+Nothing runs Python at render, so a saved file floats the same without the add-on. The rig's
+objects carry `RIG_KEY` (their role); the anchor also names its object (`OWNER_KEY`), so a rig
+whose object was deleted is found and removed (`remove_lost_rigs`).
 """
 
 import math
@@ -29,7 +31,7 @@ import math
 import bpy
 import numpy as np
 
-from ...nodes import SPECS, float_patch
+from ...nodes import SPECS, float_fit
 from ...nodes.builder import ensure_group
 from .. import waves
 from ..float_constraints import PATCH_WATER_KEY, RIG_KEY
@@ -38,8 +40,6 @@ from . import footprint_math
 RIG_COLLECTION = "Water Float Rigs"
 OWNER_KEY = "water_surface_float_owner"  # on the anchor: the floating object
 SETTINGS_KEY = "water_surface_float_footprint"  # on the floating object: draft, length, beam
-PROBE_NAMES = "abcdefghijklmnopqrstu"  # a driver variable per probe (21 = ALONG x ACROSS)
-_EXPRESSION_MAX = 255  # Blender keeps a driver's expression in 256 bytes
 _TRANSFORM = (
     "rotation_mode",
     "location",
@@ -154,70 +154,63 @@ def let_go_of_action(obj):
         bpy.data.actions.remove(action)
 
 
-def _variable(driver, name, target):
-    variable = driver.variables.new()
-    variable.name, variable.type = name, "TRANSFORMS"
-    variable.targets[0].id = target
-    variable.targets[0].transform_type = "LOC_Z"
-    variable.targets[0].transform_space = "WORLD_SPACE"
-
-
-def _drive(owner, prop, index, expression, probes):
-    """A simple-expression driver on `owner.prop[index]` reading the probes' world Z."""
-    if len(expression) > _EXPRESSION_MAX:
-        raise ValueError(f"driver expression too long ({len(expression)} characters)")
-    owner.driver_remove(prop, index)
-    driver = owner.driver_add(prop, index).driver
-    driver.type = "SCRIPTED"
-    for name, probe in zip(PROBE_NAMES, probes):
-        _variable(driver, name, probe)
-    driver.expression = expression
-
-
-def _weighted_sum(weights, constant=0.0, room=12):
-    """'w1*a+w2*b+...+c' with numbers as short as the expression's 255 characters ask."""
-    for digits in (6, 5, 4, 3):
-        terms = [f"{w:+.{digits}g}*{PROBE_NAMES[i]}" for i, w in enumerate(weights) if abs(w) > 1e-9]
-        text = "".join(terms) + (f"{constant:+.{digits + 1}g}" if constant else "")
-        text = text.lstrip("+") or "0"
-        if len(text) <= _EXPRESSION_MAX - room:
-            return text
-    raise ValueError("too many probes for one driver expression")
-
-
 # Beyond the footprint the patch keeps this much of the water each way: the probes stand over
 # the footprint (they do not tilt with the hull), and the waves' sideways displacement (the open
 # sea's choppiness, a few metres at most at the swell it takes) stays within it.
 PATCH_MARGIN = 3.0  # metres
 
 
-def _patch(obj, water, anchor, collection, reach):
-    """The piece of `water`'s evaluated surface within `reach` metres of the anchor (each way),
-    for the probes to drop onto (see the module's docstring)."""
-    name = f"{obj.name} Float Patch"
-    patch = bpy.data.objects.new(name, bpy.data.meshes.new(name))
-    patch[RIG_KEY] = "patch"
-    patch[PATCH_WATER_KEY] = water
-    patch.display_type = "WIRE"
-    patch.hide_render = True
-    collection.objects.link(patch)
-    same_place = patch.constraints.new("COPY_TRANSFORMS")
-    same_place.name = "Water Float Patch"
-    same_place.target = water
-    modifier = patch.modifiers.new(float_patch.NAME, "NODES")
-    modifier.node_group = ensure_group(SPECS[float_patch.NAME], SPECS)
+def _pose_mesh(name, points, weights):
+    """The pose's own mesh: a point per probe (in the anchor's own units) with its weights
+    (`float_fit.WEIGHTS`), then a triangle round the origin, the vertex group `POSE_GROUP`
+    (the fit lays it on the plane; its points' offsets give the tilt, the group's mean normal)."""
+    triangle = [(math.cos(turn), math.sin(turn), 0.0) for turn in (0.0, 2.0 * math.pi / 3, 4.0 * math.pi / 3)]
+    mesh = bpy.data.meshes.new(name)
+    first = len(points)
+    mesh.from_pydata([*points, *triangle], [], [(first, first + 1, first + 2)])
+    values = [value for row in weights for value in row] + [0.0] * 9
+    mesh.attributes.new(float_fit.WEIGHTS, "FLOAT_VECTOR", "POINT").data.foreach_set("vector", values)
+    return mesh
+
+
+def _pose(obj, water, anchor, collection, probes, weights, height, reach):
+    """The pose: a hidden mesh whose `Water Float Fit` modifier drops the probes onto the water
+    within `reach` metres of the anchor (each way) and lays its triangle on the plane fitted to
+    their heights, `height` above it (see the module's docstring)."""
+    name = f"{obj.name} Float Pose"
+    pose = bpy.data.objects.new(name, _pose_mesh(name, probes, weights))
+    pose[RIG_KEY] = "pose"
+    pose[PATCH_WATER_KEY] = water
+    pose.display_type = "WIRE"
+    pose.hide_render = True
+    pose.rotation_euler = (0.0, 0.0, math.pi)  # see `float_fit`: the group's X comes out along X
+    collection.objects.link(pose)
+    group = pose.vertex_groups.new(name=float_fit.POSE_GROUP)
+    group.add([len(probes), len(probes) + 1, len(probes) + 2], 1.0, "REPLACE")
+    modifier = pose.modifiers.new(float_fit.NAME, "NODES")
+    modifier.node_group = ensure_group(SPECS[float_fit.NAME], SPECS)
     waves.set_wave_input(modifier, "Water", water)
     waves.set_wave_input(modifier, "Anchor", anchor)
+    waves.set_wave_input(modifier, "Height", height)
     waves.set_wave_input(modifier, "Radius", reach)
     grid = _even_grid(water)
-    if grid is not None:
+    if grid is not None and grid[0] >= float_fit.BLOCK:
         side, corner, cell = grid
-        scale = max(abs(water.scale.x), abs(water.scale.y), 1e-6)
         waves.set_wave_input(modifier, "Grid Side", side)
         waves.set_wave_input(modifier, "Grid Corner", (*corner, 0.0))
         waves.set_wave_input(modifier, "Grid Cell", cell)
-        waves.set_wave_input(modifier, "Patch Side", min(side, math.ceil(2.0 * reach / scale / cell) + 3))
-    return patch
+    return pose
+
+
+def fit_modifier(pose):
+    """The pose's `Water Float Fit` modifier, or None (a rig made before it: probes and drivers)."""
+    found = pose.modifiers.get(float_fit.NAME) if pose is not None and pose.type == "MESH" else None
+    return found if found is not None and found.type == "NODES" else None
+
+
+def pose_group(pose):
+    """The vertex group of `pose` the object's constraints read ("" for an older rig's empty)."""
+    return float_fit.POSE_GROUP if fit_modifier(pose) is not None else ""
 
 
 def _even_grid(water):
@@ -257,7 +250,7 @@ def _cell(water):
 
 
 def patches_of(probes):
-    """The patches the probes drop onto."""
+    """The patches a rig made before `Water Float Fit` drops its probes onto."""
     found = []
     for probe in probes:
         for constraint in probe.constraints:
@@ -271,27 +264,14 @@ def _remove_objects(objects):
     for obj in objects:
         if obj is None or obj.name not in bpy.data.objects:
             continue
-        data = obj.data if obj.get(RIG_KEY) == "patch" else None
+        data = obj.data if obj.get(RIG_KEY) in ("patch", "pose") and obj.type == "MESH" else None
         bpy.data.objects.remove(obj)
         if data is not None and data.users == 0:
             bpy.data.meshes.remove(data)
 
 
-def _drop_onto(probe, surface):
-    """Shrinkwrap: the probe onto the water's evaluated surface (its patch), straight down or up."""
-    constraint = probe.constraints.new("SHRINKWRAP")
-    constraint.name = "Water Float Probe"
-    constraint.target = surface
-    constraint.shrinkwrap_type = "PROJECT"
-    constraint.project_axis = "NEG_Z"
-    constraint.project_axis_space = "WORLD"
-    constraint.use_project_opposite = True
-    constraint.cull_face = "OFF"
-    constraint.project_limit = 0.0
-
-
 def build(obj, water, scene, own_constraints, draft=None, length=None, beam=None):
-    """Makes `obj`'s anchor, probes and pose on `water`; returns (pose, settings used).
+    """Makes `obj`'s anchor and pose on `water`; returns (pose, settings used).
     `own_constraints`: the object's constraints the anchor copies (those before the float's)."""
     own_length, own_beam, centre, long_axis, keel, height = footprint_of(obj)
     length = own_length if length is None else float(length)
@@ -307,25 +287,16 @@ def build(obj, water, scene, own_constraints, draft=None, length=None, beam=None
     # The footprint's farthest probe from the origin, whichever way the object turns, and two of
     # the water's cells more: the faces round a probe keep all their corners.
     reach = math.hypot(*centre) + math.hypot(length / 2.0, beam / 2.0) + 2.0 * _cell(water)
-    patch = _patch(obj, water, anchor, collection, reach + PATCH_MARGIN)
     scale = [s if abs(s) > 1e-9 else 1.0 for s in obj.scale]
-    probes = []
-    for index, (x, y, _w) in enumerate(points):
-        probe = _empty(f"{obj.name} Float Probe {index + 1}", "probe", collection)
-        probe.parent = anchor
-        probe.location = (x / scale[0], y / scale[1], 0.0)  # in the anchor's (the object's) own units
-        _drop_onto(probe, patch)
-        probes.append(probe)
-    pose = _empty(f"{obj.name} Float Pose", "pose", collection)
-    _drive(pose, "location", 2, _weighted_sum([w[0] for w in weights], -draft - keel), probes)
-    # Euler XYZ: X by atan(sy) raises +Y, Y by -atan(sx) raises +X (second order left out).
-    _drive(pose, "rotation_euler", 0, f"atan({_weighted_sum([w[2] for w in weights])})", probes)
-    _drive(pose, "rotation_euler", 1, f"-atan({_weighted_sum([w[1] for w in weights])})", probes)
+    # In the anchor's (the object's) own units: the probes move and turn with it, not tilting.
+    probes = [(x / scale[0], y / scale[1], 0.0) for x, y, _w in points]
+    pose = _pose(obj, water, anchor, collection, probes, weights, -draft - keel, reach + PATCH_MARGIN)
     return pose, {"draft": draft, "length": length, "beam": beam}
 
 
 def probes_of(pose):
-    """The probes the pose's drivers read."""
+    """The probes the pose's drivers read, on a rig made before `Water Float Fit` ([] on one
+    made since: its probes are points of its own mesh)."""
     found = []
     animation = pose.animation_data if pose is not None else None
     for curve in animation.drivers if animation else ():
@@ -337,13 +308,18 @@ def probes_of(pose):
 
 
 def anchor_of(pose):
-    """The anchor the pose's probes hang from, or None."""
+    """The anchor the pose follows (its fit's, or its probes' parent on an older rig), or None."""
+    modifier = fit_modifier(pose)
+    if modifier is not None:
+        anchor = waves.get_wave_input(modifier, "Anchor")
+        return anchor if anchor is not None and anchor.get(RIG_KEY) == "anchor" else None
     parents = [probe.parent for probe in probes_of(pose) if probe.parent is not None]
     return parents[0] if parents and parents[0].get(RIG_KEY) == "anchor" else None
 
 
 def remove(pose):
-    """Removes a pose, its probes and its anchor (and the rig collection once it is empty)."""
+    """Removes a pose and its anchor (an older rig's probes and patch too), and the rig
+    collection once it is empty."""
     if pose is None or pose.get(RIG_KEY) != "pose":
         return
     anchor = anchor_of(pose)

@@ -1,11 +1,11 @@
 """Objects that float: they ride the water under their whole footprint, with Blender's own parts.
 
-`float_on_water` gives the object a rig (`float_rig.py`): probes over its footprint dropped onto
-the water's evaluated surface by Shrinkwrap constraints, and a pose that drivers with simple
-expressions set from the probes' heights: the plane fitted to them gives the heave (less the
-draft) and the pitch and roll. The object copies the pose's height and, at 1 - `tilt_damping`,
+`float_on_water` gives the object a rig (`float_rig.py`): an anchor that moves as the object
+would, and a pose whose Geometry Nodes modifier drops probes over its footprint onto the water's
+evaluated surface and fits a plane to their heights: its height gives the heave (less the draft)
+and its tilt the pitch and roll. The object copies the pose's height and, at 1 - `tilt_damping`,
 its tilt. Waves much longer than the hull rock it as the surface does; ripples much shorter than
-it cancel out over it. The probes name the water as their target, so the object follows
+it cancel out over it. The pose reads the water's evaluated surface, so the object follows
 whichever waves the water has: the lake's flat surface, the seeds' four sines (`Water Waves`)
 or the open sea's Ocean modifier. No Python runs at render.
 """
@@ -183,6 +183,7 @@ def float_on_water(
     obj[float_rig.SETTINGS_KEY] = settings
     tilt = _constraint(obj, "tilt", TILT, "COPY_ROTATION")
     tilt.target = pose
+    tilt.subtarget = float_rig.pose_group(pose)
     tilt.mix_mode = "AFTER"
     # After its own rotation: the pose's tilt about the object's own axes (in world space:
     # Blender's local space leaves an object's Copy Rotation without effect).
@@ -190,6 +191,7 @@ def float_on_water(
     tilt.influence = 1.0 - damping
     last = _constraint(obj, "float", FLOAT, "COPY_LOCATION")
     last.target = pose
+    last.subtarget = float_rig.pose_group(pose)
     last.use_x = last.use_y = False
     last.use_z = True
     last.use_offset = False
