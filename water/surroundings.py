@@ -200,7 +200,7 @@ def default_surroundings(water, scene):
     Worked out in the water's object space, so a tilted or scaled water gets the same answer.
     Other waters are left out (two waters seeing each other would be a cycle), and so are the
     objects floating on this water (they read its surface: a cycle too), the floating rigs'
-    patches (cut from a water's surface) and the
+    poses and patches (they read a water's surface) and the
     surroundings caches: a cache shares its water's mesh, so it may read as a water (`is_water`)
     when its material slots are not its own; it is left out by its mark in any case.
     """
@@ -213,7 +213,7 @@ def default_surroundings(water, scene):
     for obj in scene.objects:
         if obj == water or obj.type != "MESH" or is_cache(obj) or floating_on(obj) == water:
             continue
-        if obj.get(RIG_KEY):  # a floating rig's patch: it reads the water (a cycle)
+        if obj.get(RIG_KEY):  # a floating rig's pose (or older patch): it reads the water (a cycle)
             continue
         if is_water(obj) or surroundings_modifier(obj) is not None:
             continue

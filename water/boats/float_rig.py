@@ -154,9 +154,10 @@ def let_go_of_action(obj):
         bpy.data.actions.remove(action)
 
 
-# Beyond the footprint the patch keeps this much of the water each way: the probes stand over
-# the footprint (they do not tilt with the hull), and the waves' sideways displacement (the open
-# sea's choppiness, a few metres at most at the swell it takes) stays within it.
+# Off an even grid, beyond the footprint the patch keeps this much of the water each way: the
+# probes stand over the footprint (they do not tilt with the hull), and the waves' sideways
+# displacement (the open sea's choppiness, a few metres at most at the swell it takes) stays
+# within it.
 PATCH_MARGIN = 3.0  # metres
 
 
