@@ -50,6 +50,12 @@ WHITECAPS_MAX = 4.0
 # read's bubble middles are the whitecaps, metres across; the fine read laces each.
 WHITECAP_BLOB_TILE = (60.0, 30.0)
 WHITECAP_TILE = (12.0, 6.0)
+# The foam's lace drawn out along the wind by `Foam Streaks` a: its tile (12 a, 6 / a) metres, so
+# its bubbles (cellular noise) become streaks 2 a^2 times longer than wide, and the whitecaps'
+# read by a^0.45. The open sea drives a from its wind (`whitecap_math.streaks`).
+STREAKS_INPUT = "Foam Streaks"
+STREAKS_MAX = 8.0
+BLOB_STRETCH_POWER = 0.45  # the whitecaps' read drawn out a^0.45
 WHITECAP_BLOB_SOFTNESS = 0.01
 WHITECAP_FOAM = 0.9  # f inside a whitecap: the lace covers WHITECAP_FOAM - SOFTNESS / 2 of it
 # The bubbles' share per share of the sea asked: 1 / (crest share x lace cover x how much more
@@ -428,6 +434,15 @@ SHADE_INPUTS = (
         tooltip="Whitecaps on the crests, white foam lit by the scene: 1 as many as nature has for the "
         "wind (Monahan), 0 none, 2 more",
     ),
+    Socket(
+        STREAKS_INPUT,
+        "NodeSocketFloat",
+        1.0,
+        min=1.0,
+        max=STREAKS_MAX,
+        tooltip="How far the wind draws the foam's lace out along itself: 1 bubbles, more long streaks "
+        "(the open sea drives it from its wind: streaks from 12 m/s, Beaufort 6 and up)",
+    ),
     # The surroundings (depth colour, shore foam, caustics), as on the lake: nothing without them.
     *bump_uv.SCROLL_INPUTS,  # Wave Length, Wind Direction, Wind Force, Time
     Socket(
@@ -569,8 +584,9 @@ FULL_SHADE_SPEC = GroupSpec(
     # sky and the debug views; 5: whitecaps broken up by the foam tile, as the shore's foam; 6: the
     # caustics an optional part (`PARTS`: older groups have them built in, `retire_legacy_shades`);
     # 7: seen from below, Snell's window (it was clear); 8: its normal and weights from the one
-    # `Water Underside` group; 9: `Water Fresnel` (water's own reflectance, from the same group)
-    version=9,
+    # `Water Underside` group; 9: `Water Fresnel` (water's own reflectance, from the same group);
+    # 10: `Foam Streaks` (the lace drawn out along the wind: streaks in a gale, not cells)
+    version=10,
     description="Ocean colour: deep blue and the reflected sky by the ocean Fresnel, plus the glint; "
     "white lit foam on the crests; with the surroundings, the bed seen through shallow water, "
     "shore foam and caustics",
@@ -645,6 +661,13 @@ FULL_SHADE_SPEC = GroupSpec(
         # darkest few per cent, the shares light winds ask for).
         **_tile_read("blob", WHITECAP_BLOB_TILE, 27, "foam tile B (which whitecaps)", "Closest"),
         **_tile_read("lace", WHITECAP_TILE, 27, "foam tile b (their lace)"),
+        "lace_length": math("MULTIPLY", 26, "12 a: drawn out along the wind", b=WHITECAP_TILE[0]),
+        "lace_width": math("DIVIDE", 26, "6 / a: narrowed across it", a=WHITECAP_TILE[1]),
+        # Which whitecaps, by a^0.45 only: drawn out as far as their lace, one would run for
+        # hundreds of metres (over 500 m^2 at 15 m/s).
+        "blob_stretch": math("POWER", 25, "a^0.45", b=BLOB_STRETCH_POWER),
+        "blob_length": math("MULTIPLY", 26, "60 a^0.45: drawn out along the wind", b=WHITECAP_BLOB_TILE[0]),
+        "blob_width": math("DIVIDE", 26, "30 / a^0.45: narrowed across it", a=WHITECAP_BLOB_TILE[1]),
         "cap_share": math("MULTIPLY", 27, "Whitecaps x Whitecap Coverage"),
         "blob_share": math("MULTIPLY", 28, "s: bubbles' share", b=WHITECAP_BLOB_GAIN),
         "blob_gap": math("SUBTRACT", 29, "s - B"),
@@ -772,6 +795,15 @@ FULL_SHADE_SPEC = GroupSpec(
         ("wind_across:Vector", "cap_across:#1"),
         *_tile_links("blob"),
         *_tile_links("lace"),
+        (f"input:{STREAKS_INPUT}", "lace_length:#0"),
+        (f"input:{STREAKS_INPUT}", "lace_width:#1"),
+        ("lace_length:Value", "lace_u:#1"),
+        ("lace_width:Value", "lace_v:#1"),
+        (f"input:{STREAKS_INPUT}", "blob_stretch:#0"),
+        ("blob_stretch:Value", "blob_length:#0"),
+        ("blob_stretch:Value", "blob_width:#1"),
+        ("blob_length:Value", "blob_u:#1"),
+        ("blob_width:Value", "blob_v:#1"),
         ("input:Whitecaps", "cap_share:#0"),
         ("input:Whitecap Coverage", "cap_share:#1"),
         ("cap_share:Value", "blob_share:#0"),

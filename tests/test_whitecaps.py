@@ -1,6 +1,6 @@
 """The open sea's whitecaps, seen straight down in the ocean shading's foam view (Debug View 7):
 as much of the sea as Monahan and O'Muircheartaigh measured for the wind, in whitecaps metres
-across with foam's lace, drawn out downwind, and seen from a boat.
+across with foam's lace, drawn out downwind, in streaks along a strong wind, and seen from a boat.
 
 Each sea's view is a square a third of its tile wide (several of its peak waves) inside the
 un-faded middle, at three moments a few seconds apart: the whitecaps gather on the crests, so a
@@ -80,8 +80,8 @@ def _foam_views(sea_scene, wind, render, frames=FRAMES):
     return views, span / PIXELS
 
 
-@pytest.fixture(scope="module")
-def sea_scene(addon, eevee):
+def _down_scene(eevee):
+    """A clean scene under a plain sky with an orthographic camera "Down" looking straight down."""
     scene = harness.clean_scene(engine=eevee, width=PIXELS, height=PIXELS, samples=1)
     harness.set_world_color(scene, (0.45, 0.6, 0.8), 1.0)
     camera = bpy.data.objects.new("Down", bpy.data.cameras.new("Down"))
@@ -89,6 +89,11 @@ def sea_scene(addon, eevee):
     scene.collection.objects.link(camera)
     scene.camera = camera
     return scene
+
+
+@pytest.fixture(scope="module")
+def sea_scene(addon, eevee):
+    return _down_scene(eevee)
 
 
 @pytest.fixture(scope="module")
@@ -211,3 +216,62 @@ def test_a_crest_s_foam_fades_within_seconds_after_it_passes(scene):
     print(f"{len(fades)} crests left their points; the foam faded over {np.median(fades):.2f} s (median)")
     assert len(fades) > 20
     assert 0.75 <= np.median(fades) <= 4.0
+
+
+STREAK_VIEW = 60.0  # metres across, STREAK_PIXELS a side: 0.075 m a pixel
+STREAK_PIXELS = 800
+GRAIN = 0.1  # m
+PATCHES = 6.0  # m
+
+
+def _blurred(image, sigma):
+    """`image` blurred by a Gaussian of `sigma` pixels (periodic, by FFT)."""
+    fy = np.fft.fftfreq(image.shape[0])[:, None]
+    fx = np.fft.fftfreq(image.shape[1])[None, :]
+    kernel = np.exp(-2.0 * (np.pi * sigma) ** 2 * (fx**2 + fy**2))
+    return np.real(np.fft.ifft2(np.fft.fft2(image) * kernel))
+
+
+def _streak_shape(view, pixel):
+    """(angle of the foam's long axis in degrees from world +x, length / width) from the central
+    peak of the foam's autocorrelation above half its height, the patches the crests mark (over
+    PATCHES) and the lace's grain (under GRAIN) taken out first: the shape of a typical piece of foam,
+    whatever it is."""
+    fine = _blurred(view, GRAIN / pixel) - _blurred(view, PATCHES / pixel)
+    spectrum = np.fft.fft2(fine)
+    correlation = np.fft.fftshift(np.real(np.fft.ifft2(np.abs(spectrum) ** 2)))
+    centre = np.array(correlation.shape) // 2
+    peak = _label(correlation > 0.5 * correlation[tuple(centre)])
+    inside = peak == peak[tuple(centre)]
+    rows, cols = np.nonzero(inside)
+    x, y = (cols - centre[1]) * pixel, -(rows - centre[0]) * pixel  # image up is world +y
+    values, vectors = np.linalg.eigh(np.cov(np.stack((x, y))))
+    long = vectors[:, 1]
+    return np.degrees(np.arctan2(long[1], long[0])) % 180.0, np.sqrt(values[1] / max(values[0], 1e-12))
+
+
+@pytest.mark.parametrize("wind", [12.0, 15.0, 25.0])
+def test_in_a_strong_wind_the_foam_lies_in_streaks_along_it_not_cells(addon, eevee, render, wind):
+    """Straight down over 60 m of the middle at 7.5 cm a pixel, two moments: the foam's typical
+    piece (`_streak_shape`) lies within 15 degrees of the wind and is at least 5 times as long as
+    it is wide, from 12 m/s (Beaufort 6) and at 15 (7: "foam blown in streaks") to 25 (10, where
+    the foam was a net of polygonal cells). Measured: within 1.5° of the wind; 5.5-6.2, 6.7-7.0
+    and 8.9-9.2 times as long as wide, where the foam not drawn out is 1.6, 1.6 and 2.0."""
+    scene = _down_scene(eevee)
+    _foam_view_sea(scene, wind)
+    scene.camera = camera = bpy.data.objects["Down"]
+    scene.render.resolution_x = scene.render.resolution_y = STREAK_PIXELS
+    camera.data.ortho_scale = STREAK_VIEW
+    camera.location = (7.0, -5.0, 200.0)
+    camera.data.clip_end = 1000.0
+    wind_angle = np.degrees(np.arctan2(WIND[1], WIND[0]))
+    for frame in FRAMES[:2]:
+        scene.frame_set(frame)
+        view = render(scene, f"streaks_{wind:g}_{frame}")[..., 0]
+        angle, aspect = _streak_shape(view, STREAK_VIEW / STREAK_PIXELS)
+        off = abs((angle - wind_angle + 90.0) % 180.0 - 90.0)
+        print(
+            f"{wind:g} m/s, frame {frame}: foam {view.mean():.3f}, long axis {off:.1f}° off the wind, "
+            f"{aspect:.1f} times as long as wide"
+        )
+        assert off <= 15.0 and aspect >= 5.0

@@ -34,3 +34,21 @@ def crest_speed(wind_speed):
     """Metres a second the crests of a grown sea's peak waves run at: g / omega_p, with Pierson
     and Moskowitz's omega_p = 0.877 g / U, so U / 0.877."""
     return max(wind_speed, 0.0) / 0.877
+
+
+# The foam's streaks (Beaufort 6 and up: "foam blown in streaks along the direction of the wind",
+# dense from 9): the lace drawn out a times along the wind, 1 below STREAKS_FROM m/s, rising by
+# 1 every STREAKS_PER m/s, at most STREAKS_MOST (`ocean.STREAKS_INPUT`; 2 a^2 times longer than wide).
+STREAKS_FROM = 9.0
+STREAKS_PER = 0.5
+STREAKS_MOST = 8.0
+
+
+def streaks(wind_speed):
+    """`Foam Streaks` at `wind_speed` m/s: 1 (bubbles) in light winds, up to STREAKS_MOST in a gale."""
+    return min(STREAKS_MOST, max(1.0, 1.0 + (wind_speed - STREAKS_FROM) / STREAKS_PER))
+
+
+def streaks_expression(wind="u"):
+    """`streaks` as a simple-expression driver of the variable `wind` (m/s)."""
+    return f"min({STREAKS_MOST:g}, max(1, 1 + ({wind} - {STREAKS_FROM:g}) / {STREAKS_PER:g}))"

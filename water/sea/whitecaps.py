@@ -1,7 +1,8 @@
 """The open sea's whitecaps follow its wind: the ocean shading's `Whitecap Coverage` is driven by
 the Ocean modifier's wind speed (a simple expression, `whitecap_math.py`), so changing the wind
 in the panel, by script or on the modifier itself changes them too, with no Python at render;
-the sea's fade gets the crests' run in half a second (`Trail Step`), for the foam they leave."""
+and so is `Foam Streaks` (the foam drawn out along a strong wind); the sea's fade gets the crests'
+run in half a second (`Trail Step`), for the foam they leave."""
 
 import math
 
@@ -9,9 +10,10 @@ import bpy
 
 from ...nodes import sea_fade
 from ...nodes.material import drive_socket
+from ...nodes.ocean import STREAKS_INPUT
 from ...nodes.ocean_material import ocean_nodes
 from ..waves import set_wave_input
-from .whitecap_math import coverage_expression, crest_speed
+from .whitecap_math import coverage_expression, crest_speed, streaks_expression
 
 COVERAGE_INPUT = "Whitecap Coverage"
 
@@ -27,6 +29,9 @@ def drive_whitecaps(obj, ocean, fade):
             continue
         socket = nodes[1].inputs[COVERAGE_INPUT]
         drive_socket(socket, None, coverage_expression("u"), [("u", "OBJECT", obj, path)])
+        if STREAKS_INPUT in nodes[1].inputs:  # version 10 on
+            streaks = nodes[1].inputs[STREAKS_INPUT]
+            drive_socket(streaks, None, streaks_expression("u"), [("u", "OBJECT", obj, path)])
     if "Trail Step" in [item.name for item in fade.node_group.interface.items_tree]:
         # The modifier's waves at angle a travel along (-cos a, sin a) (`sea_math.wave_angle`).
         run = crest_speed(ocean.wind_velocity) * sea_fade.TRAIL_SECONDS
