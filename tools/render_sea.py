@@ -23,6 +23,9 @@ import harness
 OUT = harness.ROOT / "out"
 DOCS = harness.ROOT / "docs"
 SIZE = (640, 360)
+# The sun lamp where the sky image has its sun (`render_ocean.SUN_DIRECTION`: straight ahead,
+# 16.3 degrees up): the sea reflects both, so one elsewhere glitters where no sun is.
+SKY_SUN = (73.7, 0.0, 180.0)
 
 
 def boat(bpy):
@@ -122,7 +125,7 @@ def sea_states(bpy):
 
     tiles = {}
     for wind in STATES:
-        scene, sea = sunny_sea(bpy, (62.0, 0.0, 200.0), wind)
+        scene, sea = sunny_sea(bpy, SKY_SUN, wind)
         scene.render.resolution_x, scene.render.resolution_y = STATE_SIZE
         harness.addon("api").float_on_water(boat(bpy), sea, tilt_damping=0.3)
         for row, (eye, target) in enumerate(VIEWS):
