@@ -1,9 +1,9 @@
 """The ocean shading reflects whatever world the scene has, in EEVEE and Cycles.
 
-A world with an image is looked up as the seeds look their sky up (test_ocean_render.py holds
-that to the seeds' model); any other world, Blender's Sky Texture or a procedural gradient, is
-reflected by the renderer (the shade's "+ Traced Sky" variant). Before, such a world was one flat
-colour and the whole sea one tone.
+Every new ocean material has the renderer reflect the world (the shade's "+ Traced Sky" variant;
+test_live_sky.py switches and edits the world after the water is added); at Traced Sky 0 the
+seeds' look-up of the sky is held to the seeds' model by test_ocean_render.py. Before, a procedural
+world was one flat colour and the whole sea one tone.
 """
 
 import bpy
