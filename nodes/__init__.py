@@ -13,6 +13,7 @@ from . import (
     sea_fade,
     surroundings,
     underside,
+    underwater,
     wake,
     water_surface,
     water_waves,
@@ -36,6 +37,8 @@ SPECS = {
         keep_out.SPEC,
         wake.SPEC,
         float_fit.SPEC,
+        underwater.FOG_SPEC,
+        underwater.SHELL_SPEC,
     )
 }
 

@@ -84,6 +84,7 @@ def test_adding_water_three_times_reuses_the_group_and_the_bump_image(scene):
     # tile of theirs is made.
     lake = ["Water Surface", "Water Surface Bump UV", "Water Surface Wind Frame"]
     lake += ["Water Surroundings", "Water Surroundings Sample", "Water Underside"]
+    lake += ["Water Underwater Fog", "Water Underwater Shell"]
     assert groups == lake, "each group once, no .001 (each water has its surroundings)"
     assert sorted(i.name for i in bpy.data.images) == ["Water Surface Bump"]
 
@@ -93,7 +94,12 @@ def test_undo_removes_the_water_and_its_set_up(scene):
     bpy.ops.ed.undo_push(message="before water")
     before = {o.name for o in bpy.data.objects}
     bpy.ops.object.water_surface_add("EXEC_DEFAULT", True)  # with an undo step, as from the menu
-    assert {o.name for o in bpy.data.objects} - before == {"Water", "Water Mirror", "Water Surroundings"}
+    assert {o.name for o in bpy.data.objects} - before == {
+        "Water",
+        "Water Mirror",
+        "Water Surroundings",
+        "Water Underwater",
+    }
     bpy.ops.ed.undo()
     assert {o.name for o in bpy.data.objects} == before
     assert not bpy.context.scene.eevee.use_raytracing

@@ -99,7 +99,10 @@ def test_a_users_image_named_like_our_bump_keeps_its_pixels(scene):
     assert np.allclose(_pixels(theirs), 0.75, atol=1 / 255) and theirs.colorspace_settings.name == "sRGB"
     bump = harness.addon("nodes.material").bump_image(added.material)
     assert bump != theirs and bump.size[:] == (512, 512) and bump.packed_file is not None
-    made = [added.object.name, f"{added.object.name} Mirror", f"{added.object.name} Surroundings"]
+    made = [
+        added.object.name,
+        *(f"{added.object.name} {part}" for part in ("Mirror", "Surroundings", "Underwater")),
+    ]
     assert _snapshot()["objects"] == sorted([*before, *made])
 
 
@@ -121,7 +124,10 @@ def test_an_unpacked_bump_whose_folder_is_gone_is_made_again(scene, tmp_path):
     assert harness.addon("nodes.material").bump_image(old_water.active_material) == bump
     assert len([i for i in bpy.data.images if i.get("water_surface_bump_version")]) == 1
     made = set(o.name for o in bpy.data.objects) - before
-    assert made == {added.object.name, f"{added.object.name} Mirror", f"{added.object.name} Surroundings"}
+    assert made == {
+        added.object.name,
+        *(f"{added.object.name} {part}" for part in ("Mirror", "Surroundings", "Underwater")),
+    }
 
 
 def test_a_failed_add_leaves_nothing_behind_and_says_why_in_one_line(scene):

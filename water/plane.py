@@ -10,7 +10,7 @@ from .. import presets
 from ..nodes.material import make_water_material
 from ..nodes.ocean_material import make_ocean_material
 from ..presets import schema
-from . import camera_clip, kind, mirror, scene_state, surroundings, waves
+from . import camera_clip, kind, mirror, scene_state, surroundings, underwater, waves
 from .editable import check_editable
 from .grid import grid_mesh, max_resolution
 from .sea import open_sea, sea_math
@@ -137,6 +137,7 @@ def add_water(
             notes += _densify_for_surroundings(obj, values)
         material = dress_water(obj, scene, values)
         changes = surroundings.ensure_surroundings(obj, scene) if see_surroundings else []
+        changes += underwater.add(obj, scene)
         changes += mirror.setup_mirror(scene, obj) if mirror_setup else []
     except Exception as error:
         _roll_back(scene, before)

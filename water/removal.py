@@ -16,7 +16,7 @@ file holds none of it: the scene settings their set-up changed go back by the sa
 import bpy
 
 from ..nodes.ownership import is_original, role_of
-from . import kind, ledger, mirror, physical_caustics, sun_link, surroundings
+from . import kind, ledger, mirror, physical_caustics, sun_link, surroundings, underwater
 from .boats import float_rig, floating, keep_out, wake
 from .editable import check_editable
 from .float_constraints import float_constraints, floating_on
@@ -105,6 +105,7 @@ def _take_apart(water, scenes):
     changes += _let_floaters_go(water)
     changes += surroundings.remove_surroundings(water)
     changes += _remove_probe(water)
+    changes += underwater.remove(water)
     material = water_material(water)
     for scene in scenes:
         changes += mirror.release_mirror(scene, water)
@@ -165,6 +166,7 @@ def remove_leftovers():
     changes += keep_out.remove_lost_hulls()  # before the rigs: a water kept out of a hull holds it
     changes += wake.remove_lost_sources()  # so does a wake (its Source socket)
     changes += float_rig.remove_lost_rigs()  # those whose floating object is gone
+    changes += underwater.remove_lost()
     for probe in [o for o in bpy.data.objects if mirror.is_lost_probe(o)]:
         changes.append(_delete_probe(probe, " (its water was deleted)"))
     removed = _remove_unused_own_data() if changes else []  # only what those leftovers kept alive

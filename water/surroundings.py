@@ -54,6 +54,7 @@ from .float_constraints import RIG_KEY, floating_on
 from .grid import max_resolution
 from .mirror import rest_bounds
 from .sea import open_sea
+from .underwater import KEY as UNDERWATER_KEY
 from .values import is_water
 from .waves import amplitude_sum, input_ids, input_property, set_wave_input, wave_modifier
 
@@ -214,6 +215,8 @@ def default_surroundings(water, scene):
         if obj == water or obj.type != "MESH" or is_cache(obj) or floating_on(obj) == water:
             continue
         if obj.get(RIG_KEY):  # a floating rig's pose (or older patch): it reads the water (a cycle)
+            continue
+        if obj.get(UNDERWATER_KEY):  # a water's underwater body: it reads the water (a cycle)
             continue
         if is_water(obj) or surroundings_modifier(obj) is not None:
             continue

@@ -1,0 +1,145 @@
+"""The water a camera under the surface sees through: a hidden child of each water, its body.
+
+`add` gives a water an object `"<water> Underwater"` (parented to it, in its collections) whose
+`Water Underwater Shell` modifier makes the closed body of water under its evaluated surface,
+filled with its own material's `Water Underwater Fog` (`nodes/underwater.py`): light over d metres
+keeps `exp(-c d)` and the water's colour fills in the rest, c the water's `Absorption`. The fog's
+two values follow the water's by simple-expression drivers (the lake's Absorption and Scatter
+Color, the ocean's Absorption and Deep Color), so the water looks the same from below as from
+above, a saved file renders the same without the add-on, and the panel's colours change both.
+
+The object is seen by camera rays only (Cycles' other rays and EEVEE's probes skip it); the body
+is made only while the camera is within `Margin` of the surface or under it, so a camera that
+never goes under pays nothing. The object and its material carry `KEY` (the water's name when
+made) and the add-on's mark: `remove` finds it among the water's children, `remove_lost` by its
+parent gone.
+"""
+
+import bpy
+
+from ..nodes import SPECS, underwater
+from ..nodes.builder import ensure_group
+from ..nodes.material import drive_socket, new_node_material
+from ..nodes.ownership import is_original, mark, role_of
+from .kind import LAKE, shading_of, water_material
+from .waves import get_wave_input, set_wave_input
+
+KEY = "water_surface_underwater"  # on the object and its material: the water's name
+ROLE = "Underwater"
+MATERIAL_ROLE = "Underwater Fog"
+# EEVEE's volume slices: at its default 64 over 0.1-100 m the fog 2 m away in murky water is
+# 40% too thin; at 256 within 10% (docs/BENCHMARKS.md, Underwater fog).
+EEVEE_VOLUME_SAMPLES = 256
+# What far water looks like from above, per shading: the fog's `Scatter Color` follows it.
+_FAR_COLOUR = {LAKE: "Scatter Color"}
+_OCEAN_FAR_COLOUR = "Deep Color"
+
+
+def find(water):
+    """The water's underwater object, or None."""
+    return next(
+        (o for o in water.children if o.get(KEY) is not None and role_of(o) == ROLE and is_original(o)),
+        None,
+    )
+
+
+def is_lost(obj):
+    """Whether `obj` is an underwater object whose water is gone (deleted, or no longer water)."""
+    if obj.get(KEY) is None or role_of(obj) != ROLE or not is_original(obj):
+        return False
+    water = obj.parent
+    return water is None or water_material(water) is None or not water.users_scene
+
+
+def _shader_node(material):
+    from .values import _shader_node
+
+    return _shader_node(material)
+
+
+def _fog_material(water, material):
+    """The fog's material, its values driven by the water's `material`."""
+    fog = new_node_material(f"{water.name} Underwater")
+    fog[KEY] = water.name
+    mark(fog, MATERIAL_ROLE, 1)
+    tree = fog.node_tree
+    tree.nodes.clear()
+    node = tree.nodes.new("ShaderNodeGroup")
+    node.name = underwater.FOG_NAME
+    node.node_tree = ensure_group(SPECS[underwater.FOG_NAME], SPECS)
+    output = tree.nodes.new("ShaderNodeOutputMaterial")
+    output.location = (300.0, 0.0)
+    tree.links.new(node.outputs["Volume"], output.inputs["Volume"])
+    shade = _shader_node(material)
+    if shade is None:
+        return fog
+    far = _FAR_COLOUR.get(shading_of(material), _OCEAN_FAR_COLOUR)
+    prefix = f'node_tree.nodes["{bpy.utils.escape_identifier(shade.name)}"].inputs'
+    for mine, theirs in (("Absorption", "Absorption"), ("Scatter Color", far)):
+        socket = shade.inputs.get(theirs)
+        if socket is None:
+            continue
+        node.inputs[mine].default_value = socket.default_value
+        for i in range(3):
+            path = f'{prefix}["{theirs}"].default_value[{i}]'
+            drive_socket(node.inputs[mine], i, "v", [("v", "MATERIAL", material, path)])
+    return fog
+
+
+def add(water, scene=None):
+    """Gives `water` its underwater fog (see the module's docstring); returns what it did, in
+    words ([] when it has it already)."""
+    if find(water) is not None:
+        return []
+    material = water_material(water)
+    if material is None:
+        return []
+    fog = _fog_material(water, material)
+    name = f"{water.name} Underwater"
+    obj = bpy.data.objects.new(name, bpy.data.meshes.new(name))
+    obj[KEY] = water.name
+    mark(obj, ROLE, 1)
+    for collection in water.users_collection or ((scene or bpy.context.scene).collection,):
+        collection.objects.link(obj)
+    obj.parent = water
+    obj.hide_select = True
+    obj.display_type = "BOUNDS"
+    for seen_by in ("diffuse", "glossy", "transmission", "volume_scatter", "shadow"):
+        setattr(obj, f"visible_{seen_by}", False)
+    for probe in ("volume", "sphere", "plane"):
+        setattr(obj, f"hide_probe_{probe}", True)
+    modifier = obj.modifiers.new(underwater.SHELL_NAME, "NODES")
+    modifier.node_group = ensure_group(SPECS[underwater.SHELL_NAME], SPECS)
+    set_wave_input(modifier, "Water", water)
+    set_wave_input(modifier, "Material", fog)
+    return [f"added '{obj.name}': the water a camera under '{water.name}' sees through"]
+
+
+def _delete(obj, why=""):
+    mesh = obj.data
+    modifier = obj.modifiers.get(underwater.SHELL_NAME)
+    fog = get_wave_input(modifier, "Material") if modifier is not None and modifier.type == "NODES" else None
+    fogs = [fog] if fog is not None and role_of(fog) == MATERIAL_ROLE else []
+    change = f"removed '{obj.name}'{why}"
+    bpy.data.objects.remove(obj)
+    if mesh is not None and mesh.users == 0:
+        bpy.data.meshes.remove(mesh)
+    for fog in fogs:
+        if fog.users == 0 and is_original(fog):
+            bpy.data.materials.remove(fog)
+    return change
+
+
+def remove(water):
+    """Removes `water`'s underwater object and its fog; returns what it did, in words."""
+    changes = []
+    obj = find(water)
+    while obj is not None:
+        changes.append(_delete(obj))
+        obj = find(water)
+    return changes
+
+
+def remove_lost():
+    """Removes the underwater objects whose water is gone; returns what it did, in words."""
+    return [_delete(o, " (its water was deleted)") for o in list(bpy.data.objects) if is_lost(o)]
