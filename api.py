@@ -28,6 +28,7 @@ from .water import mirror as _mirror
 from .water import physical_caustics as _physical_caustics
 from .water import removal as _removal
 from .water import surroundings as _surroundings
+from .water import underwater as _underwater
 from .water import values as _values
 from .water import waves as _waves
 from .water.boats import floating as _floating
@@ -81,6 +82,7 @@ __all__ = (
     "set_physical_caustics",
     "set_surroundings",
     "set_swell",
+    "set_underwater",
     "setup_mirror",
     "stop_floating",
     "SurroundingsError",
@@ -290,6 +292,22 @@ def switch_part(water: bpy.types.Object, part: str, on: bool = True) -> list[str
     if problem:
         raise MirrorSetupError(problem)
     return _values.switch_part(material, part, on)
+
+
+def set_underwater(
+    water: bpy.types.Object, on: bool = True, scene: bpy.types.Scene | None = None
+) -> list[str]:
+    """The `Underwater` switch (on for every new water; the preset key `underwater`): on, a camera
+    under `water` sees through water, what is far fading into its own colour (its Absorption and
+    Scatter Color, the ocean's Deep Color), by a hidden child `"<water> Underwater"` made only while
+    the camera is near or under the surface; off, that child goes. Returns what it did, in words.
+
+    MirrorSetupError for an object that is not water; NotEditableError for linked water.
+    """
+    why = _kind.refusal(water, "underwater", subject=f"'{getattr(water, 'name', water)}'")
+    if why is not None:
+        raise MirrorSetupError(why)
+    return _underwater.switch(water, scene or bpy.context.scene, on)
 
 
 def extend_camera_clip(

@@ -15,8 +15,10 @@ Two groups, made for each water by `water/underwater.py`:
   water the fog fills, the water's evaluated surface (its waves, in its own space) lowered a
   millimetre, so a ray meets the surface before the fog, and drawn down `Depth` metres
   (Extrude Mesh of all its faces, flipped to face out); empty while the scene's camera is more
-  than `Margin` above the surface's highest point, so a camera that never goes under pays for
-  none of it.
+  than `Margin` above the surface right over or under it (or beyond the water's edge, or deeper
+  than `Depth`), so a camera that never goes under pays for none of it. Against the surface
+  where the camera is, not its highest crest: a camera 3 m over a gale's sea, whose crests
+  reach higher elsewhere, is above the water.
 """
 
 from .spec import GroupSpec, Node, Socket, math, vmath
@@ -26,7 +28,7 @@ SHELL_NAME = "Water Underwater Shell"
 LOWER = 0.001  # metres (the water's units): the fog's top below the surface
 DEPTH = 200.0  # metres of water under the surface the fog fills by default
 REACH = 150.0  # metres along the water from the camera: c = 0.04 per metre keeps 0.25% over it
-MARGIN = 1.0  # metres over the highest crest under which the camera may be at the surface
+MARGIN = 1.0  # metres over the surface under it within which the camera may see the water
 
 
 def _absorb(channel, column):
@@ -100,7 +102,7 @@ FOG_SPEC = GroupSpec(
 
 SHELL_SPEC = GroupSpec(
     name=SHELL_NAME,
-    version=1,
+    version=2,
     description="The body of water under a water's surface, for its underwater fog; empty while the "
     "camera is well above the water",
     tree_type="GeometryNodeTree",
@@ -128,8 +130,8 @@ SHELL_SPEC = GroupSpec(
             "NodeSocketFloat",
             MARGIN,
             min=0.0,
-            tooltip="The body is made while the camera is no higher than this over the highest "
-            "crest; higher, it is not made at all and costs nothing",
+            tooltip="The body is made while the camera is no higher than this over the surface "
+            "where it is; higher, it is not made at all and costs nothing",
         ),
     ),
     outputs=(Socket("Geometry", "NodeSocketGeometry"),),
@@ -152,17 +154,28 @@ SHELL_SPEC = GroupSpec(
         "out": Node("GeometryNodeFlipFaces", 11, label="facing out"),
         "closed": Node("GeometryNodeJoinGeometry", 12, label="top and body"),
         "fog": Node("GeometryNodeSetMaterial", 13),
-        # The camera, in the water's own space, against the surface's highest point.
+        # The camera, in the water's own space, against the surface right over it: a ray cast up
+        # from Margin under the camera meets the surface only if the camera is under it, or
+        # less than Margin over it (a wave's crest under a camera 3 m up in a gale is not).
         "camera": Node("GeometryNodeInputActiveCamera", 1),
         "cam": Node("GeometryNodeObjectInfo", 2, {"transform_space": "ORIGINAL"}, label="the camera"),
         "w_inv": Node("FunctionNodeInvertMatrix", 2, label="world to the water's space"),
         "here": Node("FunctionNodeTransformPoint", 3, label="the camera, in the water's space"),
-        "cam_z": Node("ShaderNodeSeparateXYZ", 4, label="its height"),
-        "bounds": Node("GeometryNodeBoundBox", 2, label="the surface's extent"),
-        "top_z": Node("ShaderNodeSeparateXYZ", 3, label="the highest crest"),
-        "reach": math("ADD", 4, "+ Margin"),
+        "margin": Node("ShaderNodeCombineXYZ", 3, label="Margin down"),
+        "below": vmath("SUBTRACT", 4, "Margin under the camera"),
+        "probe": Node("GeometryNodePoints", 5, values={"Count": 1}, label="one point there"),
+        "reach_up": math("ADD", 4, "Depth + Margin"),
+        "up": Node(
+            "GeometryNodeRaycast", 5, values={"Ray Direction": (0.0, 0.0, 1.0)}, label="up to the surface"
+        ),
+        "under": Node(
+            "GeometryNodeAttributeStatistic",
+            6,
+            {"data_type": "FLOAT", "domain": "POINT"},
+            label="under the surface (1) or not (0)",
+        ),
         "above": Node(
-            "FunctionNodeCompare", 5, {"data_type": "FLOAT", "operation": "GREATER_THAN"}, label="well above"
+            "FunctionNodeCompare", 7, {"data_type": "FLOAT", "operation": "LESS_THAN"}, {1: 0.5}, "well above"
         ),
         "made": Node("GeometryNodeSwitch", 14, {"input_type": "GEOMETRY"}, label="none while well above"),
     },
@@ -190,13 +203,17 @@ SHELL_SPEC = GroupSpec(
         ("water:Transform", "w_inv:Matrix"),
         ("w_inv:Matrix", "here:Transform"),
         ("cam:Location", "here:Vector"),
-        ("here:Vector", "cam_z:Vector"),
-        ("water:Geometry", "bounds:Geometry"),
-        ("bounds:Max", "top_z:Vector"),
-        ("top_z:Z", "reach:#0"),
-        ("input:Margin", "reach:#1"),
-        ("cam_z:Z", "above:A"),
-        ("reach:Value", "above:B"),
+        ("input:Margin", "margin:Z"),
+        ("here:Vector", "below:#0"),
+        ("margin:Vector", "below:#1"),
+        ("below:Vector", "probe:Position"),
+        ("water:Geometry", "up:Target Geometry"),
+        ("input:Depth", "reach_up:#0"),
+        ("input:Margin", "reach_up:#1"),
+        ("reach_up:Value", "up:Ray Length"),
+        ("probe:Points", "under:Geometry"),
+        ("up:Is Hit", "under:Attribute"),
+        ("under:Max", "above:A"),
         ("above:Result", "made:Switch"),
         ("fog:Geometry", "made:False"),
         ("made:Output", "output:Geometry"),

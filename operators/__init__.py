@@ -19,6 +19,7 @@ from .remove_ops import OBJECT_OT_water_remove
 from .repair_ops import OBJECT_OT_water_surface_repair
 from .surroundings_ops import OBJECT_OT_water_surroundings_set
 from .swell_ops import OBJECT_OT_water_sea_swell
+from .underwater_ops import OBJECT_OT_water_underwater
 from .wake_ops import OBJECT_OT_water_wake_add, OBJECT_OT_water_wake_bake, OBJECT_OT_water_wake_remove
 from .waves_ops import OBJECT_OT_water_waves_add
 
@@ -45,6 +46,7 @@ classes = (
     OBJECT_OT_water_remove,
     OBJECT_OT_water_camera_clip,
     OBJECT_OT_water_sea_swell,
+    OBJECT_OT_water_underwater,
 )
 
 _register_classes, _unregister_classes = bpy.utils.register_classes_factory(classes)

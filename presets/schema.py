@@ -65,6 +65,17 @@ RESOLUTION = Field(
 WAVES = Field(
     "waves", None, "bool", False, 0, 1, "Waves", "Lift the plane with the four-sine-wave Water Waves modifier"
 )
+UNDERWATER = Field(
+    "underwater",
+    None,
+    "bool",
+    True,
+    0,
+    1,
+    "Underwater",
+    "A camera under the water sees through water: what is far fades into the water's colour (a "
+    "camera that never goes under pays nothing for it)",
+)
 SHADING = Field(
     "shading",
     None,
@@ -192,6 +203,7 @@ FIELDS = (
     SIZE,
     RESOLUTION,
     WAVES,
+    UNDERWATER,
     _from_socket("wave_height", "Wave Height", "float"),
     _from_socket("wave_length", "Wave Length", "float"),
     _from_socket("wind_direction", "Wind Direction", "vec2"),

@@ -1,5 +1,7 @@
 """A water whose group was replaced or lost sockets: shown as needing repair (no KeyError), then repaired."""
 
+import types
+
 import bpy
 import pytest
 
@@ -17,10 +19,11 @@ class Layout:
     def label(self, text="", icon="NONE"):
         self.log.append(("label", text, icon))
 
-    def operator(self, idname, text="", icon="NONE"):
+    def operator(self, idname, text="", icon="NONE", **_options):
         module, name = idname.split(".")
         getattr(getattr(bpy.ops, module), name).get_rna_type()  # KeyError for an unknown operator
         self.log.append(("operator", idname, text))
+        return types.SimpleNamespace()  # the button's properties, set by the panel
 
     def menu(self, menu, text="", icon="NONE"):
         assert hasattr(bpy.types, menu), menu

@@ -10,6 +10,10 @@ window) and the ocean's clear (the sky everywhere).
 Checked: the lake, the seeds' ocean and the open sea in Cycles, the lake in EEVEE. EEVEE shows
 outside the window what its probes hold: the lake's planar mirror probe; the ocean and the open
 sea have none, so there it reflects the world (the README's limits).
+
+The waters are added with `underwater=False`: the fog between the camera and the surface (issue 40,
+test_underwater_fog.py) dims the sky through the window by the path, 3 m straight up and 4.5 m
+toward its edge, which moves the halfway crossing 2° in; here the surface alone is measured.
 """
 
 import math
@@ -32,7 +36,7 @@ def _from_below(engine, preset, render, samples):
     # The open sea in a light wind (3 m/s, waves 0.2 m high): in a rough sea the window breaks up
     # among the waves, as it does in nature, and has no one edge to measure.
     light = {"sea_wind_speed": 3.0} if preset == "open_sea" else {}
-    harness.addon("api").add_water(scene, preset=preset, size=60.0, name="Water", **light)
+    harness.addon("api").add_water(scene, preset=preset, size=60.0, name="Water", underwater=False, **light)
     dark = harness.emission_material("Dark", (0.02, 0.03, 0.04))
     floor = harness.add_cube(scene, (0.0, 0.0, -12.0), size=1.0, material=dark, name="Floor")
     floor.scale = (200.0, 200.0, 1.0)

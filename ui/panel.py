@@ -12,7 +12,7 @@ from ..nodes.ocean_material import ocean_nodes
 from ..nodes.water_surface import DEBUG_VIEWS
 from ..nodes.water_waves import WAVE_COUNT
 from ..operators.part_ops import PART_ITEMS
-from ..water import camera_clip, kind, physical_caustics
+from ..water import camera_clip, kind, physical_caustics, underwater
 from ..water.boats import floating, keep_out, wake
 from ..water.editable import why_not_editable
 from ..water.mirror import find_probe
@@ -119,6 +119,7 @@ class VIEW3D_PT_water_surface(bpy.types.Panel):
                 self.draw_sea(layout, obj, material)
             if kind.allows(obj, "waves"):
                 self.draw_waves(layout, obj)
+            self.draw_underwater(layout, obj)
             return
 
         row = layout.row(align=True)
@@ -129,6 +130,7 @@ class VIEW3D_PT_water_surface(bpy.types.Panel):
         for title, icon, names in _SECTIONS:
             self.draw_section(layout.box(), context, material, node, (title, icon, names))
         self.draw_lake_tail(layout, context, material, node)
+        self.draw_underwater(layout, obj)
 
     def draw_section(self, box, context, material, node, section):
         """One box of the lake's inputs, `section` = (title, icon, input names or "part:<name>"),
@@ -204,6 +206,13 @@ class VIEW3D_PT_water_surface(bpy.types.Panel):
         if on:
             for input_name in inputs:
                 box.prop(node.inputs[input_name], "default_value", text=input_name)
+
+    def draw_underwater(self, layout, obj):
+        """The `Underwater` switch: what a camera under the surface sees through."""
+        on = underwater.find(obj) is not None
+        text = "Underwater: on (fog by distance)" if on else "Underwater: off (clear as air)"
+        button = layout.operator("object.water_underwater", text=text, icon="MOD_FLUIDSIM", depress=on)
+        button.enable = not on
 
     def draw_surroundings(self, box, obj):
         """Which collection the water measures its depth and shore against."""

@@ -20,11 +20,20 @@ OPEN_SEA = "open_sea"
 # (`allows`, `refusal` or a poll's `water_allowing`; `tests/plain/test_features_once.py`). The
 # mirror set-up's probe and light linking, the sun and bump choices, lake presets and Cycles'
 # physical caustics are the lake shading's; every kind has ray tracing, surroundings, switched
-# shader parts (the caustics; the lake's depth colour and foam too), floating, a wake, keep-out
-# and repair. Four-sine waves are the lake's and the seeds' ocean's (the open sea's are its Ocean
-# modifier); whitecaps and a swell are the open sea's. The seeds' ocean shades with the normal
-# its waves store (`stored_normal`): a wake on it tilts that one too.
-_EVERY_KIND = {"ray_tracing", "surroundings", "shader_parts", "floating", "wake", "keep_out", "repair"}
+# shader parts (the caustics; the lake's depth colour and foam too), floating, a wake, keep-out,
+# repair and the underwater fog. Four-sine waves are the lake's and the seeds' ocean's (the open
+# sea's are its Ocean modifier); whitecaps and a swell are the open sea's. The seeds' ocean
+# shades with the normal its waves store (`stored_normal`): a wake on it tilts that one too.
+_EVERY_KIND = {
+    "ray_tracing",
+    "surroundings",
+    "shader_parts",
+    "floating",
+    "wake",
+    "keep_out",
+    "repair",
+    "underwater",
+}
 FEATURES = {
     LAKE: frozenset(
         _EVERY_KIND | {"waves", "mirror", "physical_caustics", "presets", "sun_choice", "bump_choice"}

@@ -20,7 +20,7 @@ import numpy as np
 from ..engine import RAY_TRACING, eevee_engine_id
 from ..nodes.material import glint_sun
 from ..nodes.ownership import is_original, mark, owned
-from . import kind, sun_link, underwater
+from . import kind, sun_link
 from .editable import check_editable
 from .ledger import claim, held_paths, holder_object, holders, release
 from .ledger import holder as ledger_holder
@@ -218,9 +218,6 @@ def setup_mirror(scene, water):
     # Both shadings trace refraction (the ocean's through shallow water to the bed).
     for path, value, label in RAY_TRACING:
         claim(scene, path, value, holder, label, changes)
-    if underwater.find(water) is not None:  # the fog under the water: EEVEE's slices fine enough
-        samples = underwater.EEVEE_VOLUME_SAMPLES
-        claim(scene, "eevee.volumetric_samples", samples, holder, "volume samples", changes, at_least=True)
     if not needs_mirror(water):
         return changes
     if not material.use_raytrace_refraction:

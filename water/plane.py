@@ -137,7 +137,7 @@ def add_water(
             notes += _densify_for_surroundings(obj, values)
         material = dress_water(obj, scene, values)
         changes = surroundings.ensure_surroundings(obj, scene) if see_surroundings else []
-        changes += underwater.add(obj, scene)
+        changes += underwater.add(obj, scene) if values["underwater"] else []
         changes += mirror.setup_mirror(scene, obj) if mirror_setup else []
     except Exception as error:
         _roll_back(scene, before)

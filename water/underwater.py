@@ -21,7 +21,10 @@ from ..nodes import SPECS, underwater
 from ..nodes.builder import ensure_group
 from ..nodes.material import drive_socket, new_node_material
 from ..nodes.ownership import is_original, mark, role_of
+from .editable import check_editable
 from .kind import LAKE, shading_of, water_material
+from .ledger import claim, release
+from .ledger import holder as ledger_holder
 from .waves import get_wave_input, set_wave_input
 
 KEY = "water_surface_underwater"  # on the object and its material: the water's name
@@ -86,14 +89,27 @@ def _fog_material(water, material):
     return fog
 
 
+SAMPLES_PATH = "eevee.volumetric_samples"
+
+
+def _claim_samples(water, scene, changes):
+    """EEVEE's volume slices raised for the fog, held in the water's mirror set-up's name (put back
+    with it, on Remove Water)."""
+    holder = ledger_holder("mirror", water)
+    claim(scene, SAMPLES_PATH, EEVEE_VOLUME_SAMPLES, holder, "volume samples", changes, at_least=True)
+
+
 def add(water, scene=None):
-    """Gives `water` its underwater fog (see the module's docstring); returns what it did, in
-    words ([] when it has it already)."""
+    """Gives `water` its underwater fog (see the module's docstring) and `scene` EEVEE's volume
+    samples for it; returns what it did, in words ([] when it has it already)."""
     if find(water) is not None:
         return []
     material = water_material(water)
     if material is None:
         return []
+    changes = []
+    if scene is not None:
+        _claim_samples(water, scene, changes)
     fog = _fog_material(water, material)
     name = f"{water.name} Underwater"
     obj = bpy.data.objects.new(name, bpy.data.meshes.new(name))
@@ -112,7 +128,7 @@ def add(water, scene=None):
     modifier.node_group = ensure_group(SPECS[underwater.SHELL_NAME], SPECS)
     set_wave_input(modifier, "Water", water)
     set_wave_input(modifier, "Material", fog)
-    return [f"added '{obj.name}': the water a camera under '{water.name}' sees through"]
+    return [*changes, f"added '{obj.name}': the water a camera under '{water.name}' sees through"]
 
 
 def _delete(obj, why=""):
@@ -138,6 +154,28 @@ def remove(water):
         changes.append(_delete(obj))
         obj = find(water)
     return changes
+
+
+def switch(water, scene, on=True):
+    """The `Underwater` switch: gives `water` its underwater fog or takes it away (and with it the
+    volume samples it raised, when no other water needs them). Returns what it did, in words.
+    NotEditableError for linked or overridden water."""
+    check_editable(water)
+    if on:
+        return add(water, scene)
+    changes = remove(water)
+    if changes and scene is not None:
+        holder = ledger_holder("mirror", water, stamp=False)
+        release(scene, SAMPLES_PATH, holder, "volume samples", changes, _needs_samples)
+    return changes
+
+
+def _needs_samples(holder):
+    """Whether the water a ledger holder names still has its underwater fog."""
+    from .ledger import holder_object
+
+    water = holder_object(holder)
+    return water is not None and find(water) is not None
 
 
 def remove_lost():
