@@ -585,8 +585,10 @@ FULL_SHADE_SPEC = GroupSpec(
     # caustics an optional part (`PARTS`: older groups have them built in, `retire_legacy_shades`);
     # 7: seen from below, Snell's window (it was clear); 8: its normal and weights from the one
     # `Water Underside` group; 9: `Water Fresnel` (water's own reflectance, from the same group);
-    # 10: `Foam Streaks` (the lace drawn out along the wind: streaks in a gale, not cells)
-    version=10,
+    # 10: `Foam Streaks` (the lace drawn out along the wind: streaks in a gale, not cells); 11: from
+    # below, the deep water reflected outside Snell's window is its Deep Color (was a glossy, which
+    # EEVEE fills with the world)
+    version=11,
     description="Ocean colour: deep blue and the reflected sky by the ocean Fresnel, plus the glint; "
     "white lit foam on the crests; with the surroundings, the bed seen through shallow water, "
     "shore foam and caustics",
@@ -708,17 +710,14 @@ FULL_SHADE_SPEC = GroupSpec(
         # above, not a lamp over the bed), the one rule of `Water Underside`: the sky refracted
         # inside Snell's window at 1 - F, the water below reflected outside it at F, on the normal
         # turned to face the eye (the waves' worked-out normal is not turned on a backface). The
-        # top side has no glossy to re-weight (it is unlit colour and the bed refracted), so these
-        # two closures are the underside's own. To every other ray (the bed's light bounces in
-        # Cycles) it stays clear, as EEVEE lights the bed: the two engines show the same shallows.
+        # water below is deep (the ocean shading's): what it sends up is its far colour, the Deep
+        # Color the underwater fog fades to, so the reflection is that colour at F, unlit, the
+        # same in EEVEE (whose glossy would show the world's sky there) and Cycles. To every
+        # other ray (the bed's light bounces in Cycles) it stays clear, as EEVEE lights the bed:
+        # the two engines show the same shallows.
         "underside": group_node(underside.NAME, 30, "from below: n facing the eye, F, 1 - F"),
-        "under_mirror": Node(
-            "ShaderNodeBsdfAnisotropic",
-            31,
-            {"distribution": "GGX"},
-            {"Roughness": 0.0},
-            label="from below: the water reflected",
-        ),
+        "under_deep": vmath("SCALE", 30, "the deep water's colour at F"),
+        "under_mirror": Node("ShaderNodeEmission", 31, label="from below: the deep water reflected"),
         "under_sky": Node(
             "ShaderNodeBsdfRefraction",
             31,
@@ -829,11 +828,12 @@ FULL_SHADE_SPEC = GroupSpec(
         ("geometry:Backfacing", "sides:Fac"),
         ("mix:Shader", "sides:#1"),
         ("input:Normal", "underside:Normal"),
-        ("underside:Reflected", "under_mirror:Color"),
-        ("underside:Normal", "under_mirror:Normal"),
+        ("input:Deep Color", "under_deep:#0"),
+        ("underside:Reflected", "under_deep:Scale"),
+        ("under_deep:Vector", "under_mirror:Color"),
         ("underside:Refracted", "under_sky:Color"),
         ("underside:Normal", "under_sky:Normal"),
-        ("under_mirror:BSDF", "see_through:#0"),
+        ("under_mirror:Emission", "see_through:#0"),
         ("under_sky:BSDF", "see_through:#1"),
         ("light_path:Is Camera Ray", "under_camera:Fac"),
         ("clear:BSDF", "under_camera:#1"),

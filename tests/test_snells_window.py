@@ -7,9 +7,9 @@ crosses halfway between inside (under 30°) and outside (58° to 62°): asin(1 /
 (the issue's 48.6° ± 2°, for 1.333). Without the work the lake's underside was a mirror (no
 window) and the ocean's clear (the sky everywhere).
 
-Checked: the lake, the seeds' ocean and the open sea in Cycles, the lake in EEVEE. EEVEE shows
-outside the window what its probes hold: the lake's planar mirror probe; the ocean and the open
-sea have none, so there it reflects the world (the README's limits).
+Checked: the lake, the seeds' ocean and the open sea in Cycles, the lake in EEVEE (which shows
+outside the window what its planar mirror probe holds). The ocean shadings show the deep water's
+colour outside it, in EEVEE too: test_below_open_sea.py.
 
 The waters are added with `underwater=False`: the fog between the camera and the surface (issue 40,
 test_underwater_fog.py) dims the sky through the window by the path, 3 m straight up and 4.5 m

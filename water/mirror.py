@@ -218,11 +218,8 @@ def setup_mirror(scene, water):
     # Both shadings trace refraction (the ocean's through shallow water to the bed).
     for path, value, label in RAY_TRACING:
         claim(scene, path, value, holder, label, changes)
-    if not needs_mirror(water):
-        return changes
-    if not material.use_raytrace_refraction:
-        material.use_raytrace_refraction = True
-        changes.append(f"ray-traced refraction on for '{material.name}'")
+    # A sky for every shading: the lake mirrors it, the ocean reflects it and, from below, shows
+    # it through Snell's window (a scene with no world showed the window black).
     if scene.world is None:
         world, made = sky_world()
         if made:
@@ -230,6 +227,11 @@ def setup_mirror(scene, water):
         claim(scene, "world", {"id": "WORLD", "name": world.name}, holder, "world", changes)
     elif holders(scene, "world"):  # the sky the add-on gave the scene: this water needs it too
         claim(scene, "world", {"id": "WORLD", "name": scene.world.name}, holder, "world", changes)
+    if not needs_mirror(water):
+        return changes
+    if not material.use_raytrace_refraction:
+        material.use_raytrace_refraction = True
+        changes.append(f"ray-traced refraction on for '{material.name}'")
     if not water.hide_probe_plane:
         water.hide_probe_plane = True
         changes.append(f"'{water.name}' hidden from planar captures")
