@@ -38,6 +38,7 @@ SPECS = {
         wake.SPEC,
         float_fit.SPEC,
         underwater.FOG_SPEC,
+        underwater.MENISCUS_SPEC,
         underwater.SHELL_SPEC,
     )
 }

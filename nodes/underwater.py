@@ -1,7 +1,7 @@
 """Under the water: the water between a camera below the surface and what it sees (docs/MODEL.md
 section 16).
 
-Two groups, made for each water by `water/underwater.py`:
+Three groups, made for each water by `water/underwater.py`:
 
 * `Water Underwater Fog` (a shader): light crossing d metres of water keeps `exp(-c d)` of itself
   per channel, `c` the water's `Absorption` (per metre, the one that colours it from above), and
@@ -18,7 +18,13 @@ Two groups, made for each water by `water/underwater.py`:
   than `Margin` above the surface right over or under it (or beyond the water's edge, or deeper
   than `Depth`), so a camera that never goes under pays for none of it. Against the surface
   where the camera is, not its highest crest: a camera 3 m over a gale's sea, whose crests
-  reach higher elsewhere, is above the water.
+  reach higher elsewhere, is above the water. With it, the waterline across the lens: the
+  ribbon of `Water Meniscus` where the surface crosses the plane the camera's rays start on
+  (`Near`, its Clip Start: Cycles starts each ray there, EEVEE clips what is nearer, so the rays
+  starting under the surface see the water and those over it the air), `Meniscus` x `Near`
+  thick, just beyond that plane, each of its points moved in the plane up or down to the
+  surface's height there;
+* `Water Meniscus` (a shader): the ribbon's dark line, a little of what is behind showing.
 """
 
 from .spec import GroupSpec, Node, Socket, math, vmath
@@ -28,6 +34,11 @@ SHELL_NAME = "Water Underwater Shell"
 LOWER = 0.001  # metres (the water's units): the fog's top below the surface
 DEPTH = 200.0  # metres of water under the surface the fog fills by default
 REACH = 150.0  # metres along the water from the camera: c = 0.04 per metre keeps 0.25% over it
+MENISCUS_NAME = "Water Meniscus"
+LINE_POINTS = 129  # along the waterline across the lens
+LINE_SPAN = 3.0  # x Near either side of the view's centre: the width of a 6 mm lens' view
+MENISCUS = 0.004  # x Near: the line's thickness, 5 pixels of a 1080-line frame through a 24 mm lens
+DOWN_FROM = 500.0  # metres over a point the ray down to the surface starts (over any crest)
 MARGIN = 1.0  # metres over the surface under it within which the camera may see the water
 
 
@@ -100,9 +111,187 @@ FOG_SPEC = GroupSpec(
 )
 
 
+MENISCUS_SPEC = GroupSpec(
+    name=MENISCUS_NAME,
+    version=1,
+    description="The thin line of water across the lens where it crosses the surface: dark, a "
+    "little of what is behind showing through",
+    inputs=(
+        Socket("Color", "NodeSocketColor", (0.01, 0.015, 0.02, 1.0), tooltip="The line's own colour"),
+        Socket(
+            "Opacity",
+            "NodeSocketFloat",
+            0.85,
+            min=0.0,
+            max=1.0,
+            subtype="FACTOR",
+            tooltip="How much of what is behind the line it hides",
+        ),
+    ),
+    outputs=(Socket("Shader", "NodeSocketShader"),),
+    nodes={
+        "clear": Node("ShaderNodeBsdfTransparent", 1),
+        "line": Node("ShaderNodeEmission", 1, label="the line"),
+        "mix": Node("ShaderNodeMixShader", 2),
+    },
+    links=(
+        ("input:Color", "line:Color"),
+        ("input:Opacity", "mix:Fac"),
+        ("clear:BSDF", "mix:#1"),
+        ("line:Emission", "mix:#2"),
+        ("mix:Shader", "output:Shader"),
+    ),
+)
+
+
+def _onto_surface(step, column):
+    """Nodes moving each point of the waterline, in the plane of the lens, up or down to the
+    surface under it: a ray down from over the point finds the surface's height h there; the
+    point moves along the lens' upward direction v by (h - z) / v.z. Twice, as the move shifts
+    the point across the water a little."""
+    k = f"_{step}"
+    return {
+        "lift" + k: vmath("ADD", column, "over the point", b=(0.0, 0.0, DOWN_FROM)),
+        "drop" + k: Node(
+            "GeometryNodeRaycast",
+            column + 1,
+            values={"Ray Direction": (0.0, 0.0, -1.0), "Ray Length": 2.0 * DOWN_FROM},
+            label="down to the surface",
+        ),
+        "hit_z" + k: Node("ShaderNodeSeparateXYZ", column + 2, label="the surface's height"),
+        "gap" + k: math("SUBTRACT", column + 3, "h - z"),
+        "along" + k: math("DIVIDE", column + 4, "/ v.z"),
+        "move" + k: vmath("SCALE", column + 5, "along v"),
+        "onto" + k: Node("GeometryNodeSetPosition", column + 6, label="onto the surface"),
+    }
+
+
+def _onto_links(step, before):
+    k = f"_{step}"
+    return (
+        ("line_pos:Position", "lift" + k + ":#0"),
+        ("water:Geometry", "drop" + k + ":Target Geometry"),
+        ("lift" + k + ":Vector", "drop" + k + ":Source Position"),
+        ("drop" + k + ":Hit Position", "hit_z" + k + ":Vector"),
+        ("hit_z" + k + ":Z", "gap" + k + ":#0"),
+        ("line_z:Z", "gap" + k + ":#1"),
+        ("gap" + k + ":Value", "along" + k + ":#0"),
+        ("v_z:Z", "along" + k + ":#1"),
+        ("v:Vector", "move" + k + ":#0"),
+        ("along" + k + ":Value", "move" + k + ":Scale"),
+        (before, "onto" + k + ":Geometry"),
+        ("move" + k + ":Vector", "onto" + k + ":Offset"),
+    )
+
+
+# The waterline across the lens: where the surface crosses the plane the camera's rays start on
+# (its Clip Start; Cycles starts each ray there, and EEVEE clips what is nearer), a thin ribbon
+# just beyond it along that line, seen by the camera alone. In the water's space: f the camera's
+# forward direction, h = f x z (level, across the view), v = h x f (up the lens).
+_MENISCUS_NODES = {
+    "fwd_world": Node(
+        "FunctionNodeTransformDirection", 3, values={"Direction": (0.0, 0.0, -1.0)}, label="where it looks"
+    ),
+    "fwd_local": Node("FunctionNodeTransformDirection", 4, label="in the water's space"),
+    "f": vmath("NORMALIZE", 5, "f"),
+    "across": vmath("CROSS_PRODUCT", 6, "f x z", b=(0.0, 0.0, 1.0)),
+    "h": vmath("NORMALIZE", 7, "h: level, across the view"),
+    "up_lens": vmath("CROSS_PRODUCT", 8, "h x f"),
+    "v": vmath("NORMALIZE", 9, "v: up the lens"),
+    "v_z": Node("ShaderNodeSeparateXYZ", 10, label="v.z"),
+    "lens_at": math("MULTIPLY", 5, "just past Clip Start", b=1.01),
+    "ahead": vmath("SCALE", 6, "to the lens"),
+    "centre": vmath("ADD", 7, "the lens' centre"),
+    "span": math("MULTIPLY", 5, "half its width", b=LINE_SPAN),
+    "half": vmath("SCALE", 8, "half across"),
+    "start": vmath("SUBTRACT", 9, "its left end"),
+    "spacing": math("MULTIPLY", 6, "between points", b=2.0 * LINE_SPAN / (LINE_POINTS - 1)),
+    "step": vmath("SCALE", 9, "one step across"),
+    "line": Node("GeometryNodeMeshLine", 10, values={"Count": LINE_POINTS}, label="across the lens"),
+    "line_pos": Node("GeometryNodeInputPosition", 10),
+    "line_z": Node("ShaderNodeSeparateXYZ", 11, label="z"),
+    **_onto_surface(1, 11),
+    **_onto_surface(2, 18),
+    "missed": Node("FunctionNodeBooleanMath", 25, {"operation": "NOT"}, label="no surface under it"),
+    "steep": math("ABSOLUTE", 11, "|v.z|"),
+    "level": Node(
+        "FunctionNodeCompare",
+        12,
+        {"data_type": "FLOAT", "operation": "LESS_THAN"},
+        {1: 0.05},
+        "looking straight up or down",
+    ),
+    "drop_it": Node("FunctionNodeBooleanMath", 26, {"operation": "OR"}),
+    "on_water": Node("GeometryNodeDeleteGeometry", 27, {"domain": "POINT"}, label="the line on the water"),
+    "thick": math("MULTIPLY", 5, "thickness"),
+    "half_thick": math("MULTIPLY", 6, "half up", b=0.5),
+    "raise": vmath("SCALE", 10, "half up the lens"),
+    "centred": Node("GeometryNodeSetPosition", 28, label="centred on the line"),
+    "minus_thick": math("MULTIPLY", 6, "all the way down", b=-1.0),
+    "band": vmath("SCALE", 10, "down the lens"),
+    "ribbon": Node("GeometryNodeExtrudeMesh", 29, {"mode": "EDGES"}, label="a ribbon"),
+    "meniscus": Node("GeometryNodeSetMaterial", 30, label="the meniscus"),
+    "all": Node("GeometryNodeJoinGeometry", 31, label="body and meniscus"),
+}
+
+_MENISCUS_LINKS = (
+    ("cam:Transform", "fwd_world:Transform"),
+    ("fwd_world:Direction", "fwd_local:Direction"),
+    ("w_inv:Matrix", "fwd_local:Transform"),
+    ("fwd_local:Direction", "f:Vector"),
+    ("f:Vector", "across:#0"),
+    ("across:Vector", "h:Vector"),
+    ("h:Vector", "up_lens:#0"),
+    ("f:Vector", "up_lens:#1"),
+    ("up_lens:Vector", "v:Vector"),
+    ("v:Vector", "v_z:Vector"),
+    ("input:Near", "lens_at:#0"),
+    ("f:Vector", "ahead:#0"),
+    ("lens_at:Value", "ahead:Scale"),
+    ("here:Vector", "centre:#0"),
+    ("ahead:Vector", "centre:#1"),
+    ("input:Near", "span:#0"),
+    ("h:Vector", "half:#0"),
+    ("span:Value", "half:Scale"),
+    ("centre:Vector", "start:#0"),
+    ("half:Vector", "start:#1"),
+    ("input:Near", "spacing:#0"),
+    ("h:Vector", "step:#0"),
+    ("spacing:Value", "step:Scale"),
+    ("start:Vector", "line:Start Location"),
+    ("step:Vector", "line:Offset"),
+    ("line_pos:Position", "line_z:Vector"),
+    *_onto_links(1, "line:Mesh"),
+    *_onto_links(2, "onto_1:Geometry"),
+    ("drop_2:Is Hit", "missed:#0"),
+    ("v_z:Z", "steep:#0"),
+    ("steep:Value", "level:A"),
+    ("missed:Boolean", "drop_it:#0"),
+    ("level:Result", "drop_it:#1"),
+    ("onto_2:Geometry", "on_water:Geometry"),
+    ("drop_it:Boolean", "on_water:Selection"),
+    ("input:Near", "thick:#0"),
+    ("input:Meniscus", "thick:#1"),
+    ("thick:Value", "half_thick:#0"),
+    ("v:Vector", "raise:#0"),
+    ("half_thick:Value", "raise:Scale"),
+    ("on_water:Geometry", "centred:Geometry"),
+    ("raise:Vector", "centred:Offset"),
+    ("thick:Value", "minus_thick:#0"),
+    ("v:Vector", "band:#0"),
+    ("minus_thick:Value", "band:Scale"),
+    ("centred:Geometry", "ribbon:Mesh"),
+    ("band:Vector", "ribbon:Offset"),
+    ("ribbon:Mesh", "meniscus:Geometry"),
+    ("input:Meniscus Material", "meniscus:Material"),
+    ("fog:Geometry", "all:Geometry"),
+    ("meniscus:Geometry", "all:Geometry"),
+)
+
+
 SHELL_SPEC = GroupSpec(
     name=SHELL_NAME,
-    version=2,
+    version=3,
     description="The body of water under a water's surface, for its underwater fog; empty while the "
     "camera is well above the water",
     tree_type="GeometryNodeTree",
@@ -133,6 +322,22 @@ SHELL_SPEC = GroupSpec(
             tooltip="The body is made while the camera is no higher than this over the surface "
             "where it is; higher, it is not made at all and costs nothing",
         ),
+        Socket(
+            "Near",
+            "NodeSocketFloat",
+            0.1,
+            min=0.0,
+            tooltip="The camera's Clip Start (driven from the scene's camera): where its rays start, "
+            "so where the waterline crosses the lens",
+        ),
+        Socket(
+            "Meniscus",
+            "NodeSocketFloat",
+            MENISCUS,
+            min=0.0,
+            tooltip="The waterline's thickness across the lens, times Near (0: no line)",
+        ),
+        Socket("Meniscus Material", "NodeSocketMaterial", tooltip="The waterline's shader"),
     ),
     outputs=(Socket("Geometry", "NodeSocketGeometry"),),
     nodes={
@@ -177,7 +382,8 @@ SHELL_SPEC = GroupSpec(
         "above": Node(
             "FunctionNodeCompare", 7, {"data_type": "FLOAT", "operation": "LESS_THAN"}, {1: 0.5}, "well above"
         ),
-        "made": Node("GeometryNodeSwitch", 14, {"input_type": "GEOMETRY"}, label="none while well above"),
+        **_MENISCUS_NODES,
+        "made": Node("GeometryNodeSwitch", 32, {"input_type": "GEOMETRY"}, label="none while well above"),
     },
     links=(
         ("input:Water", "water:Object"),
@@ -215,7 +421,8 @@ SHELL_SPEC = GroupSpec(
         ("up:Is Hit", "under:Attribute"),
         ("under:Max", "above:A"),
         ("above:Result", "made:Switch"),
-        ("fog:Geometry", "made:False"),
+        *_MENISCUS_LINKS,
+        ("all:Geometry", "made:False"),
         ("made:Output", "output:Geometry"),
     ),
 )

@@ -38,16 +38,20 @@ def test_a_water_added_with_underwater_off_has_no_body_and_leaves_the_volume_sam
     assert _body(off) is None
     assert not [o for o in bpy.data.objects if o.name.startswith("Off Underwater")]
     assert _samples(scene) == DEFAULT_SAMPLES, "the user's volume samples are left alone"
+    assert scene.eevee.volumetric_tile_size == "8"
     on = _api().add_water(scene, preset="clear_lake", size=10.0, name="On", location=(30, 0, 0)).object
     assert _body(on) is not None and _samples(scene) == 256
+    assert scene.eevee.volumetric_tile_size == "4", "froxels no wider than 4 pixels for the waterline"
 
 
 def test_the_switch_takes_the_body_away_and_brings_it_back_with_the_samples(addon, scene):
     scene.eevee.volumetric_samples = 96  # the user's own, raised to 256 and put back to 96
     water = _api().add_water(scene, preset="murky_pond", size=10.0, name="Pond").object
     assert _body(water) is not None and _samples(scene) == 256
+    scene.eevee.volumetric_tile_size = "2"  # finer than the add-on needs: left alone
     changes = _api().set_underwater(water, False)
     assert changes and _body(water) is None
+    assert scene.eevee.volumetric_tile_size == "2"
     assert "Pond Underwater" not in bpy.data.objects and "Pond Underwater" not in bpy.data.materials
     assert _samples(scene) == 96
     assert _api().set_underwater(water, False) == [], "off twice: nothing to do"
@@ -67,8 +71,10 @@ def test_a_second_water_keeps_the_samples_the_first_one_lets_go(addon, scene):
     _api().set_underwater(first, False)
     assert _body(first) is None and _body(second) is not None
     assert _samples(scene) == 256, "the second water's fog still needs them"
+    assert "Water Meniscus" in bpy.data.materials, "the waterline's material, shared, stays"
     _api().set_underwater(second, False)
     assert _samples(scene) == DEFAULT_SAMPLES
+    assert "Water Meniscus" not in bpy.data.materials, "nothing left behind"
 
 
 def test_the_operator_switches_and_refuses_what_is_not_water(addon, scene):

@@ -10,7 +10,9 @@ above, a saved file renders the same without the add-on, and the panel's colours
 
 The object is seen by camera rays only (Cycles' other rays and EEVEE's probes skip it); the body
 is made only while the camera is within `Margin` of the surface or under it, so a camera that
-never goes under pays nothing. The object and its material carry `KEY` (the water's name when
+never goes under pays nothing. The same modifier draws the waterline across the lens (the
+`Water Meniscus` material, one for every water), its `Near` driven from the scene's camera's Clip
+Start. The object and its material carry `KEY` (the water's name when
 made) and the add-on's mark: `remove` finds it among the water's children, `remove_lost` by its
 parent gone.
 """
@@ -19,20 +21,26 @@ import bpy
 
 from ..nodes import SPECS, underwater
 from ..nodes.builder import ensure_group
-from ..nodes.material import drive_socket, new_node_material
-from ..nodes.ownership import is_original, mark, role_of
+from ..nodes.material import drive_property, drive_socket, new_node_material
+from ..nodes.ownership import is_original, mark, owned, role_of
 from .editable import check_editable
 from .kind import LAKE, shading_of, water_material
 from .ledger import claim, release
 from .ledger import holder as ledger_holder
-from .waves import get_wave_input, set_wave_input
+from .waves import get_wave_input, input_ids, input_property, set_wave_input
 
 KEY = "water_surface_underwater"  # on the object and its material: the water's name
 ROLE = "Underwater"
 MATERIAL_ROLE = "Underwater Fog"
+MENISCUS_ROLE = underwater.MENISCUS_NAME  # the one waterline material every water's body shares
 # EEVEE's volume slices: at its default 64 over 0.1-100 m the fog 2 m away in murky water is
 # 40% too thin; at 256 within 10% (docs/BENCHMARKS.md, Underwater fog).
 EEVEE_VOLUME_SAMPLES = 256
+# EEVEE's froxels are this many pixels across: at its default 8 the fog just under a waterline
+# across the lens is thin over a band of up to 5 rows (of 90), the froxels straddling the surface;
+# at 4, within a row of it (tests/test_waterline.py).
+EEVEE_VOLUME_TILE = 4
+TILE_PATH = "eevee.volumetric_tile_size"
 # What far water looks like from above, per shading: the fog's `Scatter Color` follows it.
 _FAR_COLOUR = {LAKE: "Scatter Color"}
 _OCEAN_FAR_COLOUR = "Deep Color"
@@ -89,14 +97,48 @@ def _fog_material(water, material):
     return fog
 
 
+def _meniscus_material():
+    """The waterline's material, made once and shared by every water's underwater body."""
+    found = owned(bpy.data.materials, MENISCUS_ROLE)
+    if found:
+        return found[0]
+    material = new_node_material(MENISCUS_ROLE)
+    mark(material, MENISCUS_ROLE, 1)
+    tree = material.node_tree
+    tree.nodes.clear()
+    node = tree.nodes.new("ShaderNodeGroup")
+    node.name = underwater.MENISCUS_NAME
+    node.node_tree = ensure_group(SPECS[underwater.MENISCUS_NAME], SPECS)
+    output = tree.nodes.new("ShaderNodeOutputMaterial")
+    output.location = (300.0, 0.0)
+    tree.links.new(node.outputs["Shader"], output.inputs["Surface"])
+    return material
+
+
+def _drive_near(modifier, scene):
+    """The body's `Near` follows the scene's camera's Clip Start (a simple-expression driver: no
+    Python at render time), through a change of camera too. Only when the scene has a camera: a
+    driver whose path leads nowhere is marked invalid and stays so until the file is reopened, so
+    without one `Near` keeps Blender's default Clip Start (0.1 m) until Underwater is switched
+    off and on again."""
+    camera = scene.camera
+    if camera is None or camera.type != "CAMERA":
+        return
+    set_wave_input(modifier, "Near", camera.data.clip_start)
+    owner, path = input_property(modifier, "Near")
+    drive_property(owner, path, None, "near", [("near", "SCENE", scene, "camera.data.clip_start")])
+
+
 SAMPLES_PATH = "eevee.volumetric_samples"
 
 
 def _claim_samples(water, scene, changes):
-    """EEVEE's volume slices raised for the fog, held in the water's mirror set-up's name (put back
-    with it, on Remove Water)."""
+    """EEVEE's volume slices raised and its froxels made no wider than `EEVEE_VOLUME_TILE` pixels
+    for the fog, held in the water's mirror set-up's name (put back with it, on Remove Water)."""
     holder = ledger_holder("mirror", water)
     claim(scene, SAMPLES_PATH, EEVEE_VOLUME_SAMPLES, holder, "volume samples", changes, at_least=True)
+    tile = str(min(int(scene.eevee.volumetric_tile_size), EEVEE_VOLUME_TILE))
+    claim(scene, TILE_PATH, tile, holder, "volume tile size", changes)
 
 
 def add(water, scene=None):
@@ -128,6 +170,8 @@ def add(water, scene=None):
     modifier.node_group = ensure_group(SPECS[underwater.SHELL_NAME], SPECS)
     set_wave_input(modifier, "Water", water)
     set_wave_input(modifier, "Material", fog)
+    set_wave_input(modifier, "Meniscus Material", _meniscus_material())
+    _drive_near(modifier, scene or bpy.context.scene)
     return [*changes, f"added '{obj.name}': the water a camera under '{water.name}' sees through"]
 
 
@@ -136,6 +180,12 @@ def _delete(obj, why=""):
     modifier = obj.modifiers.get(underwater.SHELL_NAME)
     fog = get_wave_input(modifier, "Material") if modifier is not None and modifier.type == "NODES" else None
     fogs = [fog] if fog is not None and role_of(fog) == MATERIAL_ROLE else []
+    line = (
+        get_wave_input(modifier, "Meniscus Material")
+        if fogs and "Meniscus Material" in input_ids(modifier)
+        else None
+    )
+    fogs += [line] if line is not None and role_of(line) == MENISCUS_ROLE else []
     change = f"removed '{obj.name}'{why}"
     bpy.data.objects.remove(obj)
     if mesh is not None and mesh.users == 0:
@@ -167,6 +217,7 @@ def switch(water, scene, on=True):
     if changes and scene is not None:
         holder = ledger_holder("mirror", water, stamp=False)
         release(scene, SAMPLES_PATH, holder, "volume samples", changes, _needs_samples)
+        release(scene, TILE_PATH, holder, "volume tile size", changes, _needs_samples)
     return changes
 
 
