@@ -21,7 +21,7 @@ import pytest
 
 import harness
 
-pytestmark = pytest.mark.render
+pytestmark = [pytest.mark.render, pytest.mark.lts]  # new nodes (Raycast, Transform Direction) on each LTS
 
 CLIP = 0.3
 FRAME = 30
