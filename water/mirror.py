@@ -198,8 +198,9 @@ def setup_mirror(scene, water):
     """Sets `scene` and `water` up for a true mirror; returns what it changed, in words.
 
     Runs again safely: the probe is reused and only settings that differ are changed.
-    Ocean shading needs no mirror (`needs_mirror`): it gets EEVEE's ray tracing only (its
-    refraction shows the bed through shallow water).
+    Ocean shading needs no mirror (`needs_mirror`): it gets EEVEE's ray tracing (its refraction
+    shows the bed through shallow water) and, in a scene with none, the Sky world (seen through
+    Snell's window from below).
     """
     material = water_material(water)
     if material is None:

@@ -68,19 +68,28 @@ def _shader_node(material):
     return _shader_node(material)
 
 
-def _fog_material(water, material):
-    """The fog's material, its values driven by the water's `material`."""
-    fog = new_node_material(f"{water.name} Underwater")
-    fog[KEY] = water.name
-    mark(fog, MATERIAL_ROLE, 1)
-    tree = fog.node_tree
+def _group_material(name, role, group_name, group_output, material_input):
+    """A new material `name` marked as `role`: one node of the group `group_name` whose
+    `group_output` feeds the material output's `material_input`. Returns (material, that node)."""
+    material = new_node_material(name)
+    mark(material, role, 1)
+    tree = material.node_tree
     tree.nodes.clear()
     node = tree.nodes.new("ShaderNodeGroup")
-    node.name = underwater.FOG_NAME
-    node.node_tree = ensure_group(SPECS[underwater.FOG_NAME], SPECS)
+    node.name = group_name
+    node.node_tree = ensure_group(SPECS[group_name], SPECS)
     output = tree.nodes.new("ShaderNodeOutputMaterial")
     output.location = (300.0, 0.0)
-    tree.links.new(node.outputs["Volume"], output.inputs["Volume"])
+    tree.links.new(node.outputs[group_output], output.inputs[material_input])
+    return material, node
+
+
+def _fog_material(water, material):
+    """The fog's material, its values driven by the water's `material`."""
+    fog, node = _group_material(
+        f"{water.name} Underwater", MATERIAL_ROLE, underwater.FOG_NAME, "Volume", "Volume"
+    )
+    fog[KEY] = water.name
     shade = _shader_node(material)
     if shade is None:
         return fog
@@ -102,17 +111,7 @@ def _meniscus_material():
     found = owned(bpy.data.materials, MENISCUS_ROLE)
     if found:
         return found[0]
-    material = new_node_material(MENISCUS_ROLE)
-    mark(material, MENISCUS_ROLE, 1)
-    tree = material.node_tree
-    tree.nodes.clear()
-    node = tree.nodes.new("ShaderNodeGroup")
-    node.name = underwater.MENISCUS_NAME
-    node.node_tree = ensure_group(SPECS[underwater.MENISCUS_NAME], SPECS)
-    output = tree.nodes.new("ShaderNodeOutputMaterial")
-    output.location = (300.0, 0.0)
-    tree.links.new(node.outputs["Shader"], output.inputs["Surface"])
-    return material
+    return _group_material(MENISCUS_ROLE, MENISCUS_ROLE, underwater.MENISCUS_NAME, "Shader", "Surface")[0]
 
 
 def _drive_near(modifier, scene):
