@@ -275,6 +275,7 @@ def write_values(water: bpy.types.Object, values: dict) -> None:
     if problem:
         raise MirrorSetupError(problem)
     _values.write_values(material, values)
+    _underwater.fit_light(water)
 
 
 def switch_part(water: bpy.types.Object, part: str, on: bool = True) -> list[str]:
@@ -291,7 +292,7 @@ def switch_part(water: bpy.types.Object, part: str, on: bool = True) -> list[str
     problem = needs_repair(material) if material is not None else None
     if problem:
         raise MirrorSetupError(problem)
-    return _values.switch_part(material, part, on)
+    return _values.switch_part(material, part, on) + _underwater.fit_light(water)
 
 
 def set_underwater(

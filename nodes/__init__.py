@@ -6,6 +6,7 @@ This package's descriptions (`SPECS`) are plain data and import without Blender;
 
 from . import (
     bump_uv,
+    caustic_light,
     caustics,
     float_fit,
     keep_out,
@@ -40,6 +41,8 @@ SPECS = {
         underwater.FOG_SPEC,
         underwater.MENISCUS_SPEC,
         underwater.SHELL_SPEC,
+        underwater.SHEET_SPEC,
+        caustic_light.SPEC,
     )
 }
 

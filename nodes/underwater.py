@@ -289,6 +289,52 @@ _MENISCUS_LINKS = (
 )
 
 
+# Whether the camera is well above the water: the rule both the body and the caustic sheet are
+# made by (needs a "water" Object Info node and the inputs Depth and Margin).
+_GATE_NODES = {
+    # The camera, in the water's own space, against the surface right over it: a ray cast up
+    # from Margin under the camera meets the surface only if the camera is under it, or
+    # less than Margin over it (a wave's crest under a camera 3 m up in a gale is not).
+    "camera": Node("GeometryNodeInputActiveCamera", 1),
+    "cam": Node("GeometryNodeObjectInfo", 2, {"transform_space": "ORIGINAL"}, label="the camera"),
+    "w_inv": Node("FunctionNodeInvertMatrix", 2, label="world to the water's space"),
+    "here": Node("FunctionNodeTransformPoint", 3, label="the camera, in the water's space"),
+    "margin": Node("ShaderNodeCombineXYZ", 3, label="Margin down"),
+    "below": vmath("SUBTRACT", 4, "Margin under the camera"),
+    "probe": Node("GeometryNodePoints", 5, values={"Count": 1}, label="one point there"),
+    "reach_up": math("ADD", 4, "Depth + Margin"),
+    "up": Node(
+        "GeometryNodeRaycast", 5, values={"Ray Direction": (0.0, 0.0, 1.0)}, label="up to the surface"
+    ),
+    "under": Node(
+        "GeometryNodeAttributeStatistic",
+        6,
+        {"data_type": "FLOAT", "domain": "POINT"},
+        label="under the surface (1) or not (0)",
+    ),
+    "above": Node(
+        "FunctionNodeCompare", 7, {"data_type": "FLOAT", "operation": "LESS_THAN"}, {1: 0.5}, "well above"
+    ),
+}
+_GATE_LINKS = (
+    ("camera:Active Camera", "cam:Object"),
+    ("water:Transform", "w_inv:Matrix"),
+    ("w_inv:Matrix", "here:Transform"),
+    ("cam:Location", "here:Vector"),
+    ("input:Margin", "margin:Z"),
+    ("here:Vector", "below:#0"),
+    ("margin:Vector", "below:#1"),
+    ("below:Vector", "probe:Position"),
+    ("water:Geometry", "up:Target Geometry"),
+    ("input:Depth", "reach_up:#0"),
+    ("input:Margin", "reach_up:#1"),
+    ("reach_up:Value", "up:Ray Length"),
+    ("probe:Points", "under:Geometry"),
+    ("up:Is Hit", "under:Attribute"),
+    ("under:Max", "above:A"),
+)
+
+
 SHELL_SPEC = GroupSpec(
     name=SHELL_NAME,
     version=3,
@@ -359,29 +405,7 @@ SHELL_SPEC = GroupSpec(
         "out": Node("GeometryNodeFlipFaces", 11, label="facing out"),
         "closed": Node("GeometryNodeJoinGeometry", 12, label="top and body"),
         "fog": Node("GeometryNodeSetMaterial", 13),
-        # The camera, in the water's own space, against the surface right over it: a ray cast up
-        # from Margin under the camera meets the surface only if the camera is under it, or
-        # less than Margin over it (a wave's crest under a camera 3 m up in a gale is not).
-        "camera": Node("GeometryNodeInputActiveCamera", 1),
-        "cam": Node("GeometryNodeObjectInfo", 2, {"transform_space": "ORIGINAL"}, label="the camera"),
-        "w_inv": Node("FunctionNodeInvertMatrix", 2, label="world to the water's space"),
-        "here": Node("FunctionNodeTransformPoint", 3, label="the camera, in the water's space"),
-        "margin": Node("ShaderNodeCombineXYZ", 3, label="Margin down"),
-        "below": vmath("SUBTRACT", 4, "Margin under the camera"),
-        "probe": Node("GeometryNodePoints", 5, values={"Count": 1}, label="one point there"),
-        "reach_up": math("ADD", 4, "Depth + Margin"),
-        "up": Node(
-            "GeometryNodeRaycast", 5, values={"Ray Direction": (0.0, 0.0, 1.0)}, label="up to the surface"
-        ),
-        "under": Node(
-            "GeometryNodeAttributeStatistic",
-            6,
-            {"data_type": "FLOAT", "domain": "POINT"},
-            label="under the surface (1) or not (0)",
-        ),
-        "above": Node(
-            "FunctionNodeCompare", 7, {"data_type": "FLOAT", "operation": "LESS_THAN"}, {1: 0.5}, "well above"
-        ),
+        **_GATE_NODES,
         **_MENISCUS_NODES,
         "made": Node("GeometryNodeSwitch", 32, {"input_type": "GEOMETRY"}, label="none while well above"),
     },
@@ -405,24 +429,65 @@ SHELL_SPEC = GroupSpec(
         ("out:Mesh", "closed:Geometry"),
         ("closed:Geometry", "fog:Geometry"),
         ("input:Material", "fog:Material"),
-        ("camera:Active Camera", "cam:Object"),
-        ("water:Transform", "w_inv:Matrix"),
-        ("w_inv:Matrix", "here:Transform"),
-        ("cam:Location", "here:Vector"),
-        ("input:Margin", "margin:Z"),
-        ("here:Vector", "below:#0"),
-        ("margin:Vector", "below:#1"),
-        ("below:Vector", "probe:Position"),
-        ("water:Geometry", "up:Target Geometry"),
-        ("input:Depth", "reach_up:#0"),
-        ("input:Margin", "reach_up:#1"),
-        ("reach_up:Value", "up:Ray Length"),
-        ("probe:Points", "under:Geometry"),
-        ("up:Is Hit", "under:Attribute"),
-        ("under:Max", "above:A"),
+        *_GATE_LINKS,
         ("above:Result", "made:Switch"),
         *_MENISCUS_LINKS,
         ("all:Geometry", "made:False"),
+        ("made:Output", "output:Geometry"),
+    ),
+)
+
+
+SHEET_NAME = "Water Caustic Sheet"
+SHEET_DROP = 0.01  # metres (the water's units): the sheet under the surface, which it never shadows
+
+SHEET_SPEC = GroupSpec(
+    name=SHEET_NAME,
+    version=1,
+    description="A copy of a water's surface just under it, for the caustic light (`Water Caustic "
+    "Light`); made only while the camera is under the water",
+    tree_type="GeometryNodeTree",
+    inputs=(
+        Socket("Geometry", "NodeSocketGeometry"),
+        Socket("Water", "NodeSocketObject", tooltip="The water whose surface the sheet copies"),
+        Socket("Material", "NodeSocketMaterial", tooltip="The water's caustic light"),
+        Socket(
+            "Depth",
+            "NodeSocketFloat",
+            DEPTH,
+            min=0.01,
+            tooltip="How far under the surface the camera may be and still have the sheet made",
+        ),
+        Socket(
+            "Margin",
+            "NodeSocketFloat",
+            0.0,
+            min=0.0,
+            tooltip="The sheet is made while the camera is no higher than this over the surface; "
+            "above it the water shader draws the caustics on what it shows below",
+        ),
+    ),
+    outputs=(Socket("Geometry", "NodeSocketGeometry"),),
+    nodes={
+        "water": Node("GeometryNodeObjectInfo", 1, {"transform_space": "ORIGINAL"}, label="the water"),
+        "lower": Node(
+            "GeometryNodeSetPosition",
+            2,
+            values={"Offset": (0.0, 0.0, -SHEET_DROP)},
+            label=f"{SHEET_DROP * 100:g} cm under",
+        ),
+        "light": Node("GeometryNodeSetMaterial", 3),
+        **_GATE_NODES,
+        "made": Node("GeometryNodeSwitch", 8, {"input_type": "GEOMETRY"}, label="none while above"),
+    },
+    links=(
+        ("input:Water", "water:Object"),
+        ("water:Geometry", "lower:Geometry"),
+        ("lower:Geometry", "light:Geometry"),
+        ("input:Material", "light:Material"),
+        *_GATE_LINKS,
+        ("above:Result", "made:Switch"),
+        ("light:Geometry", "made:False"),
         ("made:Output", "output:Geometry"),
     ),
 )

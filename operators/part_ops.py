@@ -3,7 +3,7 @@ caustics) in or out of the shader."""
 
 import bpy
 
-from ..water import values
+from ..water import underwater, values
 from ..water.editable import NotEditableError
 from . import _poll
 
@@ -38,6 +38,7 @@ class OBJECT_OT_water_part_switch(bpy.types.Operator):
         water = context.active_object
         try:
             changes = values.switch_part(values.water_material(water), self.part, self.enable)
+            changes += underwater.fit_light(water, context.scene)
         except (ValueError, NotEditableError) as error:
             self.report({"ERROR"}, str(error))
             return {"CANCELLED"}

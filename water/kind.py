@@ -10,6 +10,7 @@ and nowhere else decides (the add pipeline and repair read the kind only to buil
 
 from ..nodes.material import water_node
 from ..nodes.ocean_material import ocean_nodes
+from ..nodes.ownership import role_of
 from .sea import open_sea
 
 LAKE = "lake"
@@ -65,9 +66,14 @@ def shading_of(material):
     return OCEAN if ocean_nodes(material) is not None else None
 
 
+# The add-on's hidden children that hold their water's material in a slot (`underwater.py`: an
+# empty mesh with no material costs EEVEE a shader compile on every render): not waters.
+HOLDS_WATER_MATERIAL = ("Underwater", "Caustic Light")
+
+
 def water_material(obj):
     """The first material of `obj` made by the add-on (lake or ocean shading), or None."""
-    if obj is None or getattr(obj, "type", None) != "MESH":
+    if obj is None or getattr(obj, "type", None) != "MESH" or role_of(obj) in HOLDS_WATER_MATERIAL:
         return None
     for slot in obj.material_slots:
         if shading_of(slot.material) is not None:

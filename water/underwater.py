@@ -12,27 +12,32 @@ The object is seen by camera rays only (Cycles' other rays and EEVEE's probes sk
 is made only while the camera is within `Margin` of the surface or under it, so a camera that
 never goes under pays nothing. The same modifier draws the waterline across the lens (the
 `Water Meniscus` material, one for every water), its `Near` driven from the scene's camera's Clip
-Start. The object and its material carry `KEY` (the water's name when
-made) and the add-on's mark: `remove` finds it among the water's children, `remove_lost` by its
-parent gone.
+Start. A second child, `"<water> Caustic Light"`, patterns the sunlight on everything under the
+water while the camera is there (`nodes/caustic_light.py`). The objects and their materials carry
+`KEY` (the water's name when made) and the add-on's mark: `remove` finds them among the water's
+children, `remove_lost` by their parent gone.
 """
 
 import bpy
 
-from ..nodes import SPECS, underwater
+from ..nodes import SPECS, caustic_light, underwater
 from ..nodes.builder import ensure_group
 from ..nodes.material import drive_property, drive_socket, new_node_material
 from ..nodes.ownership import is_original, mark, owned, role_of
 from .editable import check_editable
-from .kind import LAKE, shading_of, water_material
+from .kind import HOLDS_WATER_MATERIAL, LAKE, shading_of, water_material
 from .ledger import claim, release
 from .ledger import holder as ledger_holder
 from .waves import get_wave_input, input_ids, input_property, set_wave_input
 
 KEY = "water_surface_underwater"  # on the object and its material: the water's name
-ROLE = "Underwater"
+# The body and the caustic light: not waters, though they hold one's material.
+ROLE, LIGHT_ROLE = HOLDS_WATER_MATERIAL
 MATERIAL_ROLE = "Underwater Fog"
 MENISCUS_ROLE = underwater.MENISCUS_NAME  # the one waterline material every water's body shares
+LIGHT_MATERIAL_ROLE = "Caustic Light Material"
+# The caustic light's inputs follow the water shader's inputs of the same names.
+_LIGHT_INPUTS = tuple(socket.name for socket in caustic_light.INPUTS)
 # EEVEE's volume slices: at its default 64 over 0.1-100 m the fog 2 m away in murky water is
 # 40% too thin; at 256 within 10% (docs/BENCHMARKS.md, Underwater fog).
 EEVEE_VOLUME_SAMPLES = 256
@@ -46,17 +51,17 @@ _FAR_COLOUR = {LAKE: "Scatter Color"}
 _OCEAN_FAR_COLOUR = "Deep Color"
 
 
-def find(water):
-    """The water's underwater object, or None."""
+def find(water, role=ROLE):
+    """The water's underwater object (its body; `role=LIGHT_ROLE`: its caustic light), or None."""
     return next(
-        (o for o in water.children if o.get(KEY) is not None and role_of(o) == ROLE and is_original(o)),
+        (o for o in water.children if o.get(KEY) is not None and role_of(o) == role and is_original(o)),
         None,
     )
 
 
 def is_lost(obj):
     """Whether `obj` is an underwater object whose water is gone (deleted, or no longer water)."""
-    if obj.get(KEY) is None or role_of(obj) != ROLE or not is_original(obj):
+    if obj.get(KEY) is None or role_of(obj) not in (ROLE, LIGHT_ROLE) or not is_original(obj):
         return False
     water = obj.parent
     return water is None or water_material(water) is None or not water.users_scene
@@ -114,6 +119,68 @@ def _meniscus_material():
     return _group_material(MENISCUS_ROLE, MENISCUS_ROLE, underwater.MENISCUS_NAME, "Shader", "Surface")[0]
 
 
+def _drive_like(node, material, names):
+    """`node`'s inputs `names` follow the inputs of the same names on `material`'s water shader
+    node (simple-expression drivers: the same values in a file opened without the add-on)."""
+    shade = _shader_node(material)
+    if shade is None:
+        return
+    prefix = f'node_tree.nodes["{bpy.utils.escape_identifier(shade.name)}"].inputs'
+    for name in names:
+        mine, theirs = node.inputs.get(name), shade.inputs.get(name)
+        if mine is None or theirs is None or not hasattr(theirs, "default_value"):
+            continue
+        value = theirs.default_value
+        size = len(value) if hasattr(value, "__len__") else 0
+        if size:
+            mine.default_value = tuple(value)[: len(mine.default_value)]
+        else:
+            mine.default_value = value
+        for i in range(min(size, len(mine.default_value)) if size else 1):
+            path = f'{prefix}["{bpy.utils.escape_identifier(name)}"].default_value' + (
+                f"[{i}]" if size else ""
+            )
+            variables = [("v", "MATERIAL", material, path)]
+            drive_property(mine, "default_value", i if size else None, "v", variables)
+
+
+def _light_material(water, material):
+    """The caustic light's material: the `Water Caustic Light` shadow, its values the water's."""
+    light, node = _group_material(
+        f"{water.name} Caustic Light", LIGHT_MATERIAL_ROLE, caustic_light.NAME, "Shadow", "Surface"
+    )
+    light[KEY] = water.name
+    if hasattr(light, "use_transparent_shadow"):  # EEVEE: the shadow takes the shader's transparency
+        light.use_transparent_shadow = True
+    _drive_like(node, material, _LIGHT_INPUTS)
+    return light
+
+
+def _add_light(water, material, scene):
+    """The water's caustic light: a sheet just under its surface that only shadow rays meet, made
+    by `Water Caustic Sheet` while the camera is under the water (`nodes/caustic_light.py`)."""
+    name = f"{water.name} Caustic Light"
+    obj = bpy.data.objects.new(name, bpy.data.meshes.new(name))
+    obj.data.materials.append(material)  # as the body's: an empty mesh without one costs EEVEE
+    obj[KEY] = water.name
+    mark(obj, LIGHT_ROLE, 1)
+    for collection in water.users_collection or (scene.collection,):
+        collection.objects.link(obj)
+    obj.parent = water
+    obj.hide_select = True
+    obj.display_type = "WIRE"
+    obj.visible_camera = False
+    for seen_by in ("diffuse", "glossy", "transmission", "volume_scatter"):
+        setattr(obj, f"visible_{seen_by}", False)
+    for probe in ("volume", "sphere", "plane"):
+        setattr(obj, f"hide_probe_{probe}", True)
+    modifier = obj.modifiers.new(underwater.SHEET_NAME, "NODES")
+    modifier.node_group = ensure_group(SPECS[underwater.SHEET_NAME], SPECS)
+    set_wave_input(modifier, "Water", water)
+    set_wave_input(modifier, "Material", _light_material(water, material))
+    return f"added '{obj.name}': the sunlight's caustic pattern on what lies under '{water.name}'"
+
+
 def _drive_near(modifier, scene):
     """The body's `Near` follows the scene's camera's Clip Start (a simple-expression driver: no
     Python at render time), through a change of camera too. Only when the scene has a camera: a
@@ -143,17 +210,22 @@ def _claim_samples(water, scene, changes):
 def add(water, scene=None):
     """Gives `water` its underwater fog (see the module's docstring) and `scene` EEVEE's volume
     samples for it; returns what it did, in words ([] when it has it already)."""
-    if find(water) is not None:
-        return []
     material = water_material(water)
     if material is None:
         return []
+    if find(water) is not None:
+        return fit_light(water, scene)
     changes = []
     if scene is not None:
         _claim_samples(water, scene, changes)
     fog = _fog_material(water, material)
     name = f"{water.name} Underwater"
     obj = bpy.data.objects.new(name, bpy.data.meshes.new(name))
+    # While the camera is above, the body is an empty mesh. An empty mesh with no material costs
+    # EEVEE a shader compile on every render (its default material: measured 3.7 s on top of a
+    # 1.9 s frame, this machine's CPU), one with a material already in use costs nothing; the
+    # water's own material is one. The made body's materials come from its modifier.
+    obj.data.materials.append(material)
     obj[KEY] = water.name
     mark(obj, ROLE, 1)
     for collection in water.users_collection or ((scene or bpy.context.scene).collection,):
@@ -171,14 +243,36 @@ def add(water, scene=None):
     set_wave_input(modifier, "Material", fog)
     set_wave_input(modifier, "Meniscus Material", _meniscus_material())
     _drive_near(modifier, scene or bpy.context.scene)
-    return [*changes, f"added '{obj.name}': the water a camera under '{water.name}' sees through"]
+    changes.append(f"added '{obj.name}': the water a camera under '{water.name}' sees through")
+    return changes + fit_light(water, scene)
+
+
+def _has_caustics(material):
+    shade = _shader_node(material)
+    socket = shade.inputs.get("Caustics") if shade is not None else None
+    return socket is not None and socket.default_value > 0.0
+
+
+def fit_light(water, scene=None):
+    """Gives `water` its caustic light while it has both its underwater body and caustics
+    (`Caustics` above 0), and takes it away otherwise: without caustics the light would only
+    cost, and its tile would be packed into the file. Every entry point that changes Caustics
+    calls this. Returns what it did, in words."""
+    material = water_material(water)
+    light = find(water, LIGHT_ROLE)
+    wanted = material is not None and find(water) is not None and _has_caustics(material)
+    if wanted and light is None:
+        return [_add_light(water, material, scene or bpy.context.scene)]
+    if light is not None and not wanted:
+        return [_delete(light)]
+    return []
 
 
 def _delete(obj, why=""):
     mesh = obj.data
-    modifier = obj.modifiers.get(underwater.SHELL_NAME)
+    modifier = obj.modifiers.get(underwater.SHELL_NAME) or obj.modifiers.get(underwater.SHEET_NAME)
     fog = get_wave_input(modifier, "Material") if modifier is not None and modifier.type == "NODES" else None
-    fogs = [fog] if fog is not None and role_of(fog) == MATERIAL_ROLE else []
+    fogs = [fog] if fog is not None and role_of(fog) in (MATERIAL_ROLE, LIGHT_MATERIAL_ROLE) else []
     line = (
         get_wave_input(modifier, "Meniscus Material")
         if fogs and "Meniscus Material" in input_ids(modifier)
@@ -198,10 +292,11 @@ def _delete(obj, why=""):
 def remove(water):
     """Removes `water`'s underwater object and its fog; returns what it did, in words."""
     changes = []
-    obj = find(water)
-    while obj is not None:
-        changes.append(_delete(obj))
-        obj = find(water)
+    for role in (ROLE, LIGHT_ROLE):
+        obj = find(water, role)
+        while obj is not None:
+            changes.append(_delete(obj))
+            obj = find(water, role)
     return changes
 
 
