@@ -208,3 +208,37 @@ def test_the_light_comes_and_goes_with_the_caustics(scene):
     api.set_underwater(water, False, scene)
     assert underwater.find(water, underwater.LIGHT_ROLE) is None
     assert material_name not in bpy.data.materials
+
+
+@pytest.mark.render
+def test_a_saved_file_renders_its_caustic_light_without_the_add_on(
+    addon, eevee, render, tmp_path, addon_disabled_afterwards
+):
+    """Farm-safe: the sheet, its material and its drivers (the water's values, the clock) are
+    saved in the file. Reopened without the add-on and with scripts off, the shot under the water
+    renders the same, and the pattern still moves from frame to frame."""
+    import addon_utils
+
+    scene, _added, _camera = _build(eevee)
+    scene.render.resolution_x, scene.render.resolution_y = 96, 72
+    scene.eevee.taa_render_samples = 2
+    scene.frame_set(10)
+    path = tmp_path / "caustic_light.blend"
+    bpy.ops.wm.save_as_mainfile(filepath=str(path))
+    with_addon = render(scene, "with-addon", exr=True)[..., :3]
+
+    addon_utils.disable(harness.ADDON_MODULE, default_set=True)
+    bpy.context.preferences.filepaths.use_scripts_auto_execute = False
+    bpy.ops.wm.open_mainfile(filepath=str(path), load_ui=False, use_scripts=False)
+    scene = bpy.context.scene
+    scene.frame_set(1)
+    scene.frame_set(10)
+    without = render(scene, "without-addon", exr=True)[..., :3]
+    difference = np.abs(without - with_addon)
+    print(f"mean difference {difference.mean():.5f}")
+    assert difference.mean() < 0.005
+    scene.frame_set(40)
+    later = render(scene, "later", exr=True)[..., :3]
+    moved = np.abs(later - without).mean()
+    print(f"frames 10 and 40 apart by {moved:.4f}")
+    assert moved > 5 * max(difference.mean(), 0.002), "the pattern moves with the clock"
