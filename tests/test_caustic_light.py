@@ -17,6 +17,7 @@ import math
 import bpy
 import numpy as np
 import pytest
+from test_caustics import _box
 
 import harness
 
@@ -25,18 +26,6 @@ CUBE = ((-0.75, 0.25, BED), (0.75, 1.75, -1.5))
 SUN_ELEVATION, SUN_AZIMUTH = 55.0, 40.0
 CAMERA = ((1.5, -3.0, -0.8), (0.0, 1.0, -2.3))
 FADE_DEPTH = 8.0  # caustics.FADE_DEPTH: the pattern's contrast falls as exp(-d / 8)
-
-
-def _box(scene, name, low, high, material):
-    (x0, y0, z0), (x1, y1, z1) = low, high
-    verts = [(x, y, z) for z in (z0, z1) for y in (y0, y1) for x in (x0, x1)]
-    faces = [(0, 2, 3, 1), (4, 5, 7, 6), (0, 1, 5, 4), (2, 6, 7, 3), (0, 4, 6, 2), (1, 3, 7, 5)]
-    mesh = bpy.data.meshes.new(name)
-    mesh.from_pydata(verts, [], faces)
-    mesh.materials.append(material)
-    obj = bpy.data.objects.new(name, mesh)
-    scene.collection.objects.link(obj)
-    return obj
 
 
 def _to_sun():

@@ -95,19 +95,8 @@ def _fog_material(water, material):
         f"{water.name} Underwater", MATERIAL_ROLE, underwater.FOG_NAME, "Volume", "Volume"
     )
     fog[KEY] = water.name
-    shade = _shader_node(material)
-    if shade is None:
-        return fog
     far = _FAR_COLOUR.get(shading_of(material), _OCEAN_FAR_COLOUR)
-    prefix = f'node_tree.nodes["{bpy.utils.escape_identifier(shade.name)}"].inputs'
-    for mine, theirs in (("Absorption", "Absorption"), ("Scatter Color", far)):
-        socket = shade.inputs.get(theirs)
-        if socket is None:
-            continue
-        node.inputs[mine].default_value = socket.default_value
-        for i in range(3):
-            path = f'{prefix}["{theirs}"].default_value[{i}]'
-            drive_socket(node.inputs[mine], i, "v", [("v", "MATERIAL", material, path)])
+    _drive_like(node, material, (("Absorption", "Absorption"), ("Scatter Color", far)))
     return fog
 
 
@@ -119,29 +108,26 @@ def _meniscus_material():
     return _group_material(MENISCUS_ROLE, MENISCUS_ROLE, underwater.MENISCUS_NAME, "Shader", "Surface")[0]
 
 
-def _drive_like(node, material, names):
-    """`node`'s inputs `names` follow the inputs of the same names on `material`'s water shader
-    node (simple-expression drivers: the same values in a file opened without the add-on)."""
+def _drive_like(node, material, pairs):
+    """Each (mine, theirs) of `pairs`: `node`'s input `mine` follows the input `theirs` of
+    `material`'s water shader node, component by component (simple-expression drivers: the same
+    values in a file opened without the add-on). Inputs either side lacks are left alone."""
     shade = _shader_node(material)
     if shade is None:
         return
     prefix = f'node_tree.nodes["{bpy.utils.escape_identifier(shade.name)}"].inputs'
-    for name in names:
-        mine, theirs = node.inputs.get(name), shade.inputs.get(name)
+    for name, their_name in pairs:
+        mine, theirs = node.inputs.get(name), shade.inputs.get(their_name)
         if mine is None or theirs is None or not hasattr(theirs, "default_value"):
             continue
-        value = theirs.default_value
-        size = len(value) if hasattr(value, "__len__") else 0
-        if size:
-            mine.default_value = tuple(value)[: len(mine.default_value)]
-        else:
-            mine.default_value = value
-        for i in range(min(size, len(mine.default_value)) if size else 1):
-            path = f'{prefix}["{bpy.utils.escape_identifier(name)}"].default_value' + (
-                f"[{i}]" if size else ""
-            )
-            variables = [("v", "MATERIAL", material, path)]
-            drive_property(mine, "default_value", i if size else None, "v", variables)
+        path = f'{prefix}["{bpy.utils.escape_identifier(their_name)}"].default_value'
+        if not hasattr(theirs.default_value, "__len__"):
+            mine.default_value = theirs.default_value
+            drive_property(mine, "default_value", None, "v", [("v", "MATERIAL", material, path)])
+            continue
+        for i in range(min(len(theirs.default_value), len(mine.default_value), 3)):
+            mine.default_value[i] = theirs.default_value[i]
+            drive_socket(mine, i, "v", [("v", "MATERIAL", material, f"{path}[{i}]")])
 
 
 def _light_material(water, material):
@@ -152,31 +138,49 @@ def _light_material(water, material):
     light[KEY] = water.name
     if hasattr(light, "use_transparent_shadow"):  # EEVEE: the shadow takes the shader's transparency
         light.use_transparent_shadow = True
-    _drive_like(node, material, _LIGHT_INPUTS)
+    _drive_like(node, material, [(name, name) for name in _LIGHT_INPUTS])
     return light
+
+
+_RAYS = ("camera", "diffuse", "glossy", "transmission", "volume_scatter", "shadow")
+
+
+def _hidden_child(water, material, scene, suffix, role, seen_by, group_name):
+    """A new object `"<water> <suffix>"` marked as `role`: the water's child in its collections,
+    unselectable, seen only by the rays `seen_by` and by no probe, its mesh made by the Geometry
+    Nodes group `group_name` from the water (`Water` input). Returns (object, its modifier).
+
+    While the camera is above, its mesh is empty. An empty mesh with no material costs EEVEE a
+    shader compile on every render (measured 3.7 s on top of a 1.9 s frame, this machine's CPU,
+    docs/BENCHMARKS.md), one with a material already drawn costs nothing: it holds the water's own
+    (`kind.HOLDS_WATER_MATERIAL` keeps it from being taken for a water); what its modifier makes
+    carries that modifier's materials."""
+    name = f"{water.name} {suffix}"
+    obj = bpy.data.objects.new(name, bpy.data.meshes.new(name))
+    obj.data.materials.append(material)
+    obj[KEY] = water.name
+    mark(obj, role, 1)
+    for collection in water.users_collection or (scene.collection,):
+        collection.objects.link(obj)
+    obj.parent = water
+    obj.hide_select = True
+    obj.display_type = "BOUNDS"
+    for ray in _RAYS:
+        setattr(obj, f"visible_{ray}", ray in seen_by)
+    for probe in ("volume", "sphere", "plane"):
+        setattr(obj, f"hide_probe_{probe}", True)
+    modifier = obj.modifiers.new(group_name, "NODES")
+    modifier.node_group = ensure_group(SPECS[group_name], SPECS)
+    set_wave_input(modifier, "Water", water)
+    return obj, modifier
 
 
 def _add_light(water, material, scene):
     """The water's caustic light: a sheet just under its surface that only shadow rays meet, made
     by `Water Caustic Sheet` while the camera is under the water (`nodes/caustic_light.py`)."""
-    name = f"{water.name} Caustic Light"
-    obj = bpy.data.objects.new(name, bpy.data.meshes.new(name))
-    obj.data.materials.append(material)  # as the body's: an empty mesh without one costs EEVEE
-    obj[KEY] = water.name
-    mark(obj, LIGHT_ROLE, 1)
-    for collection in water.users_collection or (scene.collection,):
-        collection.objects.link(obj)
-    obj.parent = water
-    obj.hide_select = True
-    obj.display_type = "WIRE"
-    obj.visible_camera = False
-    for seen_by in ("diffuse", "glossy", "transmission", "volume_scatter"):
-        setattr(obj, f"visible_{seen_by}", False)
-    for probe in ("volume", "sphere", "plane"):
-        setattr(obj, f"hide_probe_{probe}", True)
-    modifier = obj.modifiers.new(underwater.SHEET_NAME, "NODES")
-    modifier.node_group = ensure_group(SPECS[underwater.SHEET_NAME], SPECS)
-    set_wave_input(modifier, "Water", water)
+    obj, modifier = _hidden_child(
+        water, material, scene, "Caustic Light", LIGHT_ROLE, ("shadow",), underwater.SHEET_NAME
+    )
     set_wave_input(modifier, "Material", _light_material(water, material))
     return f"added '{obj.name}': the sunlight's caustic pattern on what lies under '{water.name}'"
 
@@ -209,7 +213,8 @@ def _claim_samples(water, scene, changes):
 
 def add(water, scene=None):
     """Gives `water` its underwater fog (see the module's docstring) and `scene` EEVEE's volume
-    samples for it; returns what it did, in words ([] when it has it already)."""
+    samples for it, and its caustic light while it has caustics (`fit_light`); returns what it did,
+    in words ([] when it has them already)."""
     material = water_material(water)
     if material is None:
         return []
@@ -219,27 +224,9 @@ def add(water, scene=None):
     if scene is not None:
         _claim_samples(water, scene, changes)
     fog = _fog_material(water, material)
-    name = f"{water.name} Underwater"
-    obj = bpy.data.objects.new(name, bpy.data.meshes.new(name))
-    # While the camera is above, the body is an empty mesh. An empty mesh with no material costs
-    # EEVEE a shader compile on every render (its default material: measured 3.7 s on top of a
-    # 1.9 s frame, this machine's CPU), one with a material already in use costs nothing; the
-    # water's own material is one. The made body's materials come from its modifier.
-    obj.data.materials.append(material)
-    obj[KEY] = water.name
-    mark(obj, ROLE, 1)
-    for collection in water.users_collection or ((scene or bpy.context.scene).collection,):
-        collection.objects.link(obj)
-    obj.parent = water
-    obj.hide_select = True
-    obj.display_type = "BOUNDS"
-    for seen_by in ("diffuse", "glossy", "transmission", "volume_scatter", "shadow"):
-        setattr(obj, f"visible_{seen_by}", False)
-    for probe in ("volume", "sphere", "plane"):
-        setattr(obj, f"hide_probe_{probe}", True)
-    modifier = obj.modifiers.new(underwater.SHELL_NAME, "NODES")
-    modifier.node_group = ensure_group(SPECS[underwater.SHELL_NAME], SPECS)
-    set_wave_input(modifier, "Water", water)
+    obj, modifier = _hidden_child(
+        water, material, scene or bpy.context.scene, "Underwater", ROLE, ("camera",), underwater.SHELL_NAME
+    )
     set_wave_input(modifier, "Material", fog)
     set_wave_input(modifier, "Meniscus Material", _meniscus_material())
     _drive_near(modifier, scene or bpy.context.scene)
