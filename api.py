@@ -83,6 +83,7 @@ __all__ = (
     "set_surroundings",
     "set_swell",
     "set_underwater",
+    "set_light_shafts",
     "setup_mirror",
     "stop_floating",
     "SurroundingsError",
@@ -309,6 +310,27 @@ def set_underwater(
     if why is not None:
         raise MirrorSetupError(why)
     return _underwater.switch(water, scene or bpy.context.scene, on)
+
+
+def set_light_shafts(water: bpy.types.Object, share: float) -> list[str]:
+    """`Light Shafts` (0 for every new water; the preset key `light_shafts`): under the water, the
+    share (0..1, clamped) of what the water takes from the light that it scatters towards the eye
+    rather than absorbs, so the sun's shafts show, patterned by the caustics. The water's
+    extinction stays what it was; 0 costs nothing. Returns what it did, in words.
+
+    MirrorSetupError for an object that is not water or has Underwater off; NotEditableError for
+    linked water.
+    """
+    why = _kind.refusal(water, "underwater", subject=f"'{getattr(water, 'name', water)}'")
+    if why is not None:
+        raise MirrorSetupError(why)
+    check_editable(water)
+    try:
+        return _underwater.set_light_shafts(water, share)
+    except NotEditableError:
+        raise
+    except ValueError as error:
+        raise MirrorSetupError(str(error)) from error
 
 
 def extend_camera_clip(

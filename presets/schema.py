@@ -76,6 +76,17 @@ UNDERWATER = Field(
     "A camera under the water sees through water: what is far fades into the water's colour (a "
     "camera that never goes under pays nothing for it)",
 )
+LIGHT_SHAFTS = Field(
+    "light_shafts",
+    None,
+    "float",
+    0.0,
+    0.0,
+    1.0,
+    "Light Shafts",
+    "Under the water, the sun's light shafts: the share of what the water takes from the light "
+    "that it scatters rather than absorbs (0: none, and no cost; needs Underwater)",
+)
 SHADING = Field(
     "shading",
     None,
@@ -204,6 +215,7 @@ FIELDS = (
     RESOLUTION,
     WAVES,
     UNDERWATER,
+    LIGHT_SHAFTS,
     _from_socket("wave_height", "Wave Height", "float"),
     _from_socket("wave_length", "Wave Length", "float"),
     _from_socket("wind_direction", "Wind Direction", "vec2"),

@@ -17,6 +17,7 @@ import math
 import bpy
 import numpy as np
 import pytest
+from mathutils import Vector
 from test_caustics import _box
 
 import harness
@@ -205,10 +206,12 @@ def test_a_saved_file_renders_its_caustic_light_without_the_add_on(
 ):
     """Farm-safe: the sheet, its material and its drivers (the water's values, the clock) are
     saved in the file. Reopened without the add-on and with scripts off, the shot under the water
-    renders the same, and the pattern still moves from frame to frame."""
+    (its light shafts on too) renders the same, the pattern still moves from frame to frame, and
+    the shafts' sun follows the sun when it turns."""
     import addon_utils
 
-    scene, _added, _camera = _build(eevee)
+    scene, added, _camera = _build(eevee)
+    harness.addon("api").set_light_shafts(added.object, 1.0)
     scene.render.resolution_x, scene.render.resolution_y = 96, 72
     scene.eevee.taa_render_samples = 2
     scene.frame_set(10)
@@ -231,3 +234,14 @@ def test_a_saved_file_renders_its_caustic_light_without_the_add_on(
     moved = np.abs(later - without).mean()
     print(f"frames 10 and 40 apart by {moved:.4f}")
     assert moved > 5 * max(difference.mean(), 0.002), "the pattern moves with the clock"
+
+    sun = bpy.data.objects["Sun"]
+    sun.rotation_euler.z += math.radians(60.0)
+    scene.frame_set(41)
+    fog = next(m for m in bpy.data.materials if m.name.endswith(" Underwater"))
+    water = next(m for m in bpy.data.materials if m.node_tree and "Water Surface" in m.node_tree.nodes)
+    fog_sun = fog.node_tree.nodes["Water Underwater Fog"].inputs["Sun Direction"].default_value
+    water_sun = water.node_tree.nodes["Water Surface"].inputs["Sun Direction"].default_value
+    expected = sun.matrix_world.to_3x3() @ Vector((0.0, 0.0, -1.0))
+    assert tuple(fog_sun) == pytest.approx(tuple(water_sun), abs=1e-5)
+    assert tuple(fog_sun) == pytest.approx(tuple(expected), abs=1e-3), "the shafts' sun turned with the sun"

@@ -213,6 +213,9 @@ class VIEW3D_PT_water_surface(bpy.types.Panel):
         text = "Underwater: on (fog by distance)" if on else "Underwater: off (clear as air)"
         button = layout.operator("object.water_underwater", text=text, icon="MOD_FLUIDSIM", depress=on)
         button.enable = not on
+        node = underwater.fog_node(obj) if on else None
+        if node is not None and "Light Shafts" in node.inputs:
+            layout.prop(node.inputs["Light Shafts"], "default_value", text="Light Shafts")
 
     def draw_surroundings(self, box, obj):
         """Which collection the water measures its depth and shore against."""

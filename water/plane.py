@@ -138,6 +138,8 @@ def add_water(
         material = dress_water(obj, scene, values)
         changes = surroundings.ensure_surroundings(obj, scene) if see_surroundings else []
         changes += underwater.add(obj, scene) if values["underwater"] else []
+        if values["underwater"] and values["light_shafts"] > 0.0:
+            changes += underwater.set_light_shafts(obj, values["light_shafts"])
         changes += mirror.setup_mirror(scene, obj) if mirror_setup else []
     except Exception as error:
         _roll_back(scene, before)

@@ -13,9 +13,10 @@ is made only while the camera is within `Margin` of the surface or under it, so 
 never goes under pays nothing. The same modifier draws the waterline across the lens (the
 `Water Meniscus` material, one for every water), its `Near` driven from the scene's camera's Clip
 Start. A second child, `"<water> Caustic Light"`, patterns the sunlight on everything under the
-water while the camera is there (`nodes/caustic_light.py`). The objects and their materials carry
-`KEY` (the water's name when made) and the add-on's mark: `remove` finds them among the water's
-children, `remove_lost` by their parent gone.
+water while the camera is there (`nodes/caustic_light.py`), and the light shafts too
+(`set_light_shafts`: the fog's sunlight scattered towards the eye, off by default). The objects
+and their materials carry `KEY` (the water's name when made) and the add-on's mark: `remove`
+finds them among the water's children, `remove_lost` by their parent gone.
 """
 
 import bpy
@@ -96,7 +97,8 @@ def _fog_material(water, material):
     )
     fog[KEY] = water.name
     far = _FAR_COLOUR.get(shading_of(material), _OCEAN_FAR_COLOUR)
-    _drive_like(node, material, (("Absorption", "Absorption"), ("Scatter Color", far)))
+    pairs = (("Absorption", "Absorption"), ("Scatter Color", far), ("Sun Direction", "Sun Direction"))
+    _drive_like(node, material, pairs)
     return fog
 
 
@@ -253,6 +255,44 @@ def fit_light(water, scene=None):
     if light is not None and not wanted:
         return [_delete(light)]
     return []
+
+
+def fog_node(water):
+    """The `Water Underwater Fog` node of `water`'s body's fog material, or None."""
+    body = find(water)
+    modifier = body.modifiers.get(underwater.SHELL_NAME) if body is not None else None
+    fog = get_wave_input(modifier, "Material") if modifier is not None and modifier.type == "NODES" else None
+    if fog is None or fog.node_tree is None:
+        return None
+    return fog.node_tree.nodes.get(underwater.FOG_NAME)
+
+
+def light_shafts(water):
+    """`water`'s `Light Shafts` (0 without its underwater body: none)."""
+    node = fog_node(water)
+    socket = node.inputs.get("Light Shafts") if node is not None else None
+    return socket.default_value if socket is not None else 0.0
+
+
+def set_light_shafts(water, share):
+    """Sets `water`'s `Light Shafts`, clamped to 0..1: the share of its fog's light taken by
+    scattering, not absorption (`nodes/underwater.py`). Returns what it did, in words. ValueError
+    when the water has no underwater body (Underwater off) or its fog predates Light Shafts."""
+    check_editable(water)
+    node = fog_node(water)
+    socket = node.inputs.get("Light Shafts") if node is not None else None
+    if socket is None:
+        why = "Underwater is off" if find(water) is None else "its underwater fog has no Light Shafts"
+        raise ValueError(f"'{water.name}' has no light shafts to set: {why} (switch Underwater off and on)")
+    share = min(max(float(share), 0.0), 1.0)
+    if share > 0.0:  # a fog made before Light Shafts has its Sun Direction undriven
+        material = water_material(water)
+        if material is not None:
+            _drive_like(node, material, (("Sun Direction", "Sun Direction"),))
+    if socket.default_value == share:
+        return []
+    socket.default_value = share
+    return [f"'{water.name}': Light Shafts {share:g}"]
 
 
 def _delete(obj, why=""):
