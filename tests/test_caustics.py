@@ -277,6 +277,8 @@ def test_physical_caustics_switch_sets_cycles_up_and_puts_everything_back(pool):
     bed, slab, sun = bpy.data.objects["Bed"], bpy.data.objects["Slab"], pool["sun"]
     scene.cycles.transmission_bounces = 2
     water.data.polygons.foreach_set("use_smooth", [False] * len(water.data.polygons))
+    underwater = harness.addon("water.underwater")
+    assert underwater.find(water, underwater.LIGHT_ROLE) is not None
     changes = physical.enable(water, scene)
     print("\n".join(changes))
     try:
@@ -286,6 +288,7 @@ def test_physical_caustics_switch_sets_cycles_up_and_puts_everything_back(pool):
         assert sun.data.cycles.is_caustics_light and scene.cycles.caustics_refractive
         assert scene.cycles.transmission_bounces >= 8
         assert node.inputs["Caustics"].default_value == 0.0, "the shader's pattern steps aside"
+        assert underwater.find(water, underwater.LIGHT_ROLE) is None, "and the caustic light under it"
         assert any("shader Caustics" in change for change in changes)
         assert physical.enable(water, scene) == [], "a second switch changes nothing"
     finally:
@@ -296,6 +299,7 @@ def test_physical_caustics_switch_sets_cycles_up_and_puts_everything_back(pool):
     assert not bed.cycles.is_caustics_receiver and not sun.data.cycles.is_caustics_light
     assert scene.cycles.transmission_bounces == 2
     assert node.inputs["Caustics"].default_value == 1.0
+    assert underwater.find(water, underwater.LIGHT_ROLE) is not None, "the caustic light back"
 
 
 @pytest.mark.render

@@ -15,7 +15,7 @@ import json
 import bpy
 
 from ..nodes.material import first_sun, fit_parts, glint_sun, water_node
-from . import kind
+from . import kind, underwater
 from .editable import check_editable
 from .ledger import claim, holder_object, release
 from .ledger import holder as ledger_holder
@@ -98,6 +98,7 @@ def enable(water, scene):
     label = "shader Caustics (Cycles computes them now)"
     claim(material, _shader_path(material), 0.0, holder, label, changes)
     fit_parts(material)  # the shader's caustics at 0 leave the shader: they cost nothing
+    changes += underwater.fit_light(water, scene)  # nor a caustic light under the water
     # What to let go of when switched off: the receivers and the sun by name (one renamed since is
     # left as it is), and whether the mesh was shaded flat.
     state = {"receivers": [o.name for o in receivers], "sun": sun.data.name, "flat": not all(smooth)}
@@ -136,6 +137,7 @@ def disable(water, scene):
         material = water_material(water)
         release(material, _shader_path(material), holder, "shader Caustics", changes)
         fit_parts(material)  # the shader's caustics back in when their value came back
+        changes += underwater.fit_light(water, scene)
     return changes
 
 
