@@ -9,8 +9,9 @@
 * A newer one (saved by a newer add-on) is left alone, so the file keeps working.
 * A group half-built when building fails is removed, and the error names it.
 * Image slots: `BUMP_IMAGE` nodes get the image asked for (and the group is found by it);
-  `FOAM_IMAGE` and `CAUSTICS_IMAGE` nodes get the add-on's own tiles, never part of how a
-  group is found. A reused group whose image of any kind was deleted is given the one asked for.
+  `FOAM_IMAGE`, `CAUSTICS_IMAGE` and `ROUGH_FRESNEL_IMAGE` nodes get the add-on's own tiles,
+  never part of how a group is found. A reused group whose image of any kind was deleted is
+  given the one asked for.
 """
 
 import bpy
@@ -18,10 +19,15 @@ import bpy
 from .caustics_image import ensure_caustics_image
 from .foam_image import ensure_foam_image
 from .ownership import VERSION_KEY, mark, owned
-from .spec import BUMP_IMAGE, CAUSTICS_IMAGE, FOAM_IMAGE
+from .rough_fresnel_image import ensure_rough_fresnel_image
+from .spec import BUMP_IMAGE, CAUSTICS_IMAGE, FOAM_IMAGE, ROUGH_FRESNEL_IMAGE
 
 # The add-on's own generated tiles: a slot for one is filled with it, made when needed.
-OWN_TILES = {FOAM_IMAGE: ensure_foam_image, CAUSTICS_IMAGE: ensure_caustics_image}
+OWN_TILES = {
+    FOAM_IMAGE: ensure_foam_image,
+    CAUSTICS_IMAGE: ensure_caustics_image,
+    ROUGH_FRESNEL_IMAGE: ensure_rough_fresnel_image,
+}
 
 COLUMN_WIDTH = 240
 ROW_GAP = 40

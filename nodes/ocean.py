@@ -10,7 +10,9 @@ when it was made) and hands it to `Water Ocean Shade`:
 `F = dot(-eye, n) / 2 + 0.5`, `deep * F + sky * (1 - F) + pow(mean(sky), Glint Power)`,
 unlit, as the seeds draw it. Where the mesh carries crest foam (the open sea's
 `water_whitecaps`, `sea_fade.py`) whitecaps break out as white foam lit by the scene, the foam
-tile breaking them up as it does the shore's foam.
+tile breaking them up as it does the shore's foam; past the sea's fade, where the flat far mesh
+marks no crests, as many whitecaps are spread over the sea at random, so a gale's foam reaches
+the horizon.
 
 With the surroundings' attributes (`water_depth`, `water_shore_distance`, `water_surroundings`,
 as on the lake), the lake's rules apply: the bed is seen through the water at
@@ -25,10 +27,11 @@ world's image: the lookup sits between them in the material.
 
 from dataclasses import replace
 
-from . import bump_uv, caustics, foam_map, sea_fade, underside, water_surface
+from . import bump_uv, caustics, foam_map, rough_fresnel, sea_fade, underside, water_surface
 from .bump_uv import TIME_INPUT
 from .spec import (
     BUMP_IMAGE,
+    ROUGH_FRESNEL_IMAGE,
     GroupSpec,
     Node,
     Part,
@@ -118,6 +121,72 @@ def _inverse_square_root(matrix):
 WHITEN = _inverse_square_root(BUMP_SLOPE_COVARIANCE)
 
 
+# The far sea's whitecaps: past the sea's fade the mesh marks no crests, so there the shade picks
+# bubbles of the share the crests and the foam they leave would cover, s x crest share x seen,
+# that is the share asked over the lace's cover, everywhere: the same foam on average, to the
+# horizon. A group left undriven (the seeds' ocean) fades only past FADE_NEVER metres.
+FADE_START_INPUT = "Fade Start"
+FADE_END_INPUT = "Fade End"
+FADE_NEVER = 1.0e6
+FAR_CAP_GAIN = 1.0 / (WHITECAP_FOAM - foam_map.SOFTNESS / 2)
+PICK_TILE = (37.0, 53.0)  # metres across and along the wind: no multiple of the other reads
+
+UNRESOLVED_SLOPE = "Unresolved Slope"
+# Toksvig's measure on the three reads (`rough_fresnel.py`): a read of averaged normals is shorter,
+# 1 - |2c - 1|^2; its mean over the taps, from the floor of a sharp read to the whole tile's,
+# is the share r of the slopes lost; they were (k_along^2 + k_across^2) / 2 each way, times the
+# taps' own mean square where they are combined as the seeds do (Even Slopes 0).
+_LOST_SCALE = (rough_fresnel.LOST_FULL - rough_fresnel.LOST_FLOOR) ** -1
+_UNRESOLVED_NODES = {
+    **{f"off_{i}": vmath("ADD", 9, f"tap {i} - 0.5", b=(-0.5, -0.5, -0.5)) for i in (1, 2, 3)},
+    **{f"len_{i}": vmath("DOT_PRODUCT", 10, f"|tap {i} - 0.5|^2") for i in (1, 2, 3)},
+    "len_12": math("ADD", 11),
+    "len_123": math("ADD", 12, "sum of |tap - 0.5|^2"),
+    "lost_share": math(
+        "MULTIPLY_ADD",
+        13,
+        "r: share of the slopes lost",
+        clamp=True,
+        b=-4.0 / 3.0 * _LOST_SCALE,
+        c=(1.0 - rough_fresnel.LOST_FLOOR) * _LOST_SCALE,
+    ),
+    "k2_along": math("MULTIPLY", 11, "k_along^2"),
+    "k2_across": math("MULTIPLY", 11, "k_across^2"),
+    "k2_sum": math("ADD", 12),
+    "even_share": math(
+        "MULTIPLY_ADD",
+        12,
+        "half the taps' mean square",
+        b=(1.0 - rough_fresnel.SEEDS_SLOPE_VARIANCE) / 2.0,
+        c=rough_fresnel.SEEDS_SLOPE_VARIANCE / 2.0,
+    ),
+    "full_slope": math("MULTIPLY", 13, "the bump's mean square slope each way"),
+    "lost_slope": math("MULTIPLY", 14, "lost mean square slope"),
+}
+_UNRESOLVED_LINKS = (
+    *((f"tap_{i}:Color", f"off_{i}:#0") for i in (1, 2, 3)),
+    *((f"off_{i}:Vector", f"len_{i}:#0") for i in (1, 2, 3)),
+    *((f"off_{i}:Vector", f"len_{i}:#1") for i in (1, 2, 3)),
+    ("len_1:Value", "len_12:#0"),
+    ("len_2:Value", "len_12:#1"),
+    ("len_12:Value", "len_123:#0"),
+    ("len_3:Value", "len_123:#1"),
+    ("len_123:Value", "lost_share:#0"),
+    ("k_along:Value", "k2_along:#0"),
+    ("k_along:Value", "k2_along:#1"),
+    ("k_across:Value", "k2_across:#0"),
+    ("k_across:Value", "k2_across:#1"),
+    ("k2_along:Value", "k2_sum:#0"),
+    ("k2_across:Value", "k2_sum:#1"),
+    ("input:Even Slopes", "even_share:#0"),
+    ("k2_sum:Value", "full_slope:#0"),
+    ("even_share:Value", "full_slope:#1"),
+    ("lost_share:Value", "lost_slope:#0"),
+    ("full_slope:Value", "lost_slope:#1"),
+    ("lost_slope:Value", f"output:{UNRESOLVED_SLOPE}"),
+)
+
+
 def _tap(key, column):
     return Node("ShaderNodeTexImage", column, {"extension": "REPEAT", "image": BUMP_IMAGE}, label=key)
 
@@ -127,7 +196,8 @@ NORMAL_SPEC = GroupSpec(
     # 2: a mesh without the attribute transforms +Z, never a zero vector: EEVEE before 5.x
     # normalises it into NaN, and the NaN, even weighted by 0, turned the whole ocean black.
     # 3: the slopes scale apart along and across the wind (the open sea's Cox and Munk slopes).
-    version=3,
+    # 4: `Unresolved Slope`, the slopes the taps' mipmaps averaged away (`rough_fresnel.py`).
+    version=4,
     description="Wave normal plus three bump taps; the direction the eye reflects into",
     inputs=(
         Socket(
@@ -185,6 +255,12 @@ NORMAL_SPEC = GroupSpec(
     outputs=(
         Socket("Normal", "NodeSocketVector", tooltip="Shading normal n, world space"),
         Socket("Reflection", "NodeSocketVector", tooltip="reflect(eye, n): where the sky is looked up"),
+        Socket(
+            UNRESOLVED_SLOPE,
+            "NodeSocketFloat",
+            tooltip="Mean square slope each way the bump's reads lost to averaging (EEVEE's mipmaps "
+            "far off; about 0 in Cycles): the shade gives back what those slopes reflect",
+        ),
     ),
     nodes={
         # The wave normal, world space; the surface's own where the mesh has no attribute.
@@ -266,6 +342,7 @@ NORMAL_SPEC = GroupSpec(
         "n": vmath("NORMALIZE", 18, "n"),
         "eye": vmath("SCALE", 18, "eye = -incoming", scale=-1.0),
         "reflect": vmath("REFLECT", 19, "reflect(eye, n)"),
+        **_UNRESOLVED_NODES,
     },
     links=(
         ("hasnt:Value", "safe:#1"),
@@ -377,6 +454,7 @@ NORMAL_SPEC = GroupSpec(
         ("n:Vector", "reflect:#1"),
         ("n:Vector", "output:Normal"),
         ("reflect:Vector", "output:Reflection"),
+        *_UNRESOLVED_LINKS,
     ),
 )
 
@@ -488,6 +566,35 @@ SHADE_INPUTS = (
         "Texture, a gradient), and the sun's own glint, as on the lake; 0: the Sky input (the world's "
         "image or colour looked up as the seeds do, as it was when the water was added)",
     ),
+    Socket(
+        UNRESOLVED_SLOPE,
+        "NodeSocketFloat",
+        0.0,
+        min=0.0,
+        max=1.0,
+        hide_value=True,
+        tooltip="Mean square slope each way the bump's reads lost (Water Ocean Normal's): with Water "
+        "Fresnel, the far sea reflects what those slopes would (water's mean reflectance over them, a "
+        "rougher mirror), not a flat mirror",
+    ),
+    Socket(
+        FADE_START_INPUT,
+        "NodeSocketFloat",
+        FADE_NEVER,
+        min=0.0,
+        hide_value=True,
+        tooltip="Metres from the sea's centre where its waves, and the crests marked on them, start to "
+        "fade (the sea's Water Sea Fade, driven): past it whitecaps are spread over the flat far sea, "
+        "as many as the crests would carry",
+    ),
+    Socket(
+        FADE_END_INPUT,
+        "NodeSocketFloat",
+        FADE_NEVER + 1.0,
+        min=0.0,
+        hide_value=True,
+        tooltip="Metres from the sea's centre where its waves are gone (Water Sea Fade's, driven)",
+    ),
 )
 TRACED_SKY = "Traced Sky"
 # The traced sky's roughness: the ripples finer than a pixel. Sharp (0), EEVEE draws a sun lamp's
@@ -587,8 +694,11 @@ FULL_SHADE_SPEC = GroupSpec(
     # `Water Underside` group; 9: `Water Fresnel` (water's own reflectance, from the same group);
     # 10: `Foam Streaks` (the lace drawn out along the wind: streaks in a gale, not cells); 11: from
     # below, the deep water reflected outside Snell's window is its Deep Color (was a glossy, which
-    # EEVEE fills with the world)
-    version=11,
+    # EEVEE fills with the world); 12: `Unresolved Slope` (with Water Fresnel: water's mean
+    # reflectance over the slopes EEVEE's mipmaps averaged away, `rough_fresnel.py`, and a mirror
+    # as much rougher); past the sea's fade (`Fade Start`, `Fade End`), whitecaps where the mesh
+    # marks no crests (the far sea was bare: at 25 m/s a band 40 m up)
+    version=12,
     description="Ocean colour: deep blue and the reflected sky by the ocean Fresnel, plus the glint; "
     "white lit foam on the crests; with the surroundings, the bed seen through shallow water, "
     "shore foam and caustics",
@@ -601,6 +711,45 @@ FULL_SHADE_SPEC = GroupSpec(
         # Water's own (`Water Fresnel`): F = 1 - R, R Fresnel's reflectance at water's IOR, from the
         # one `Water Underside` group (on the top side its facing normal is n itself).
         "F_towards": math("SUBTRACT", 3, "water's 1 - R - the seeds'"),
+        # Where the bump's slopes were averaged away, R over them: R(c, s) - R(c, 0) from the table
+        # at (|cos|, s), s the lost rms slope (with Water Fresnel only: the seeds' stay the seeds').
+        "unresolved": math("MULTIPLY", 1, "lost slope^2 x Water Fresnel"),
+        "rough_slope": math("SQRT", 1, "s"),
+        "rough_v": math(
+            "MULTIPLY_ADD",
+            2,
+            "table row",
+            b=(rough_fresnel.SIZE - 1) / (rough_fresnel.SIZE * rough_fresnel.SLOPE_MAX),
+            c=0.5 / rough_fresnel.SIZE,
+        ),
+        "abs_cos": math("ABSOLUTE", 2, "|cos|"),
+        "rough_u": math(
+            "MULTIPLY_ADD",
+            2,
+            "table column",
+            b=(rough_fresnel.SIZE - 1) / rough_fresnel.SIZE,
+            c=0.5 / rough_fresnel.SIZE,
+        ),
+        "rough_uv": Node("ShaderNodeCombineXYZ", 2, label="(|cos|, s) in the table"),
+        "rough_table": Node(
+            "ShaderNodeTexImage",
+            3,
+            {"extension": "EXTEND", "interpolation": "Linear", "image": ROUGH_FRESNEL_IMAGE},
+            label="R(c, s) - R(c, 0)",
+        ),
+        "rough_refracted": math("SUBTRACT", 3, "1 - R over the lost slopes"),
+        # The mirror as much rougher: GGX alpha^2 = alpha_0^2 + 2 s^2 (roughness = sqrt(alpha)).
+        "rough_alpha": Node(
+            "ShaderNodeMath",
+            4,
+            {"operation": "MULTIPLY_ADD"},
+            {1: 2.0, 2: TRACED_ROUGHNESS**4},
+            label="alpha^2",
+            part="traced_sky",
+        ),
+        "rough_mirror": Node(
+            "ShaderNodeMath", 5, {"operation": "POWER"}, {1: 0.25}, label="roughness", part="traced_sky"
+        ),
         "F": math("MULTIPLY_ADD", 3, "F: the seeds' or water's (Water Fresnel)"),
         "one_minus_F": math("SUBTRACT", 4, "1 - F", a=1.0),
         # Through the water: T = exp(-Absorption x path) where the surroundings are measured, else 0
@@ -622,10 +771,11 @@ FULL_SHADE_SPEC = GroupSpec(
         "mirror_share": Node(
             "ShaderNodeMath", 5, {"operation": "MULTIPLY"}, label="(1 - F) x Traced Sky", part="traced_sky"
         ),
+        # Multiscatter: rougher far off, a single-scatter lobe would lose light at grazing.
         "mirror": Node(
             "ShaderNodeBsdfAnisotropic",
             30,
-            {"distribution": "GGX"},
+            {"distribution": "MULTI_GGX"},
             {"Roughness": TRACED_ROUGHNESS},
             label="the world reflected",
             part="traced_sky",
@@ -681,6 +831,35 @@ FULL_SHADE_SPEC = GroupSpec(
             label="a whitecap's bubble",
         ),
         "on_crest": math("MULTIPLY", 31, "on a crest x bubble"),
+        "fade_distance": vmath("LENGTH", 25, "distance from the sea's centre"),
+        "fade_near": Node(
+            "ShaderNodeMapRange",
+            26,
+            {"interpolation_type": "SMOOTHSTEP", "clamp": True},
+            {3: 1.0, 4: 0.0},
+            label="near: 1 where the crests are marked, 0 past the fade",
+        ),
+        # The mesh's mark faded by `near` (as the waves): whole again, and then either the crests'
+        # whitecaps or the far ones, by a third read of the tile R (near > R: the crests'), so
+        # both stay whole whitecaps where the sea fades, in those shares.
+        "near_floor": math("MAXIMUM", 27, "near (>= 0.001)", b=0.001),
+        "crest_whole": math("DIVIDE", 28, "the crest's mark, unfaded", clamp=True),
+        "pick_u": math("DIVIDE", 27, "across / 37 m", b=PICK_TILE[0]),
+        "pick_v": math("DIVIDE", 27, "along / 53 m", b=PICK_TILE[1]),
+        "pick_uv": Node("ShaderNodeCombineXYZ", 28),
+        "pick_tile": water_surface.foam_tile(29, "foam tile R (crests' or far whitecaps)", "Closest"),
+        "crests_here": math("GREATER_THAN", 30, "near > R: the crests' whitecaps"),
+        "caps_change": math("SUBTRACT", 31, "crests' - far"),
+        "far_share": math("MULTIPLY", 28, "far bubbles' share", b=FAR_CAP_GAIN),
+        "far_gap": math("SUBTRACT", 29, "far share - B"),
+        "far_blob": Node(
+            "ShaderNodeMapRange",
+            30,
+            {"interpolation_type": "LINEAR", "clamp": True},
+            {1: -WHITECAP_BLOB_SOFTNESS / 2, 2: WHITECAP_BLOB_SOFTNESS / 2, 3: 0.0, 4: 1.0},
+            label="a far whitecap's bubble",
+        ),
+        "caps": math("MULTIPLY_ADD", 31, "the crests' or the far whitecaps"),
         # No share, no whitecap: the bubble's soft edge would otherwise keep a few.
         "some": math("MULTIPLY", 30, "any share?", clamp=True, b=1.0 / WHITECAP_BLOB_SOFTNESS),
         "on_some": math("MULTIPLY", 31, "x any share"),
@@ -738,7 +917,21 @@ FULL_SHADE_SPEC = GroupSpec(
         ("geometry:Incoming", "cos:#0"),
         ("input:Normal", "cos:#1"),
         ("cos:Value", "F_seeds:#0"),
-        ("underside:Refracted", "F_towards:#0"),
+        (f"input:{UNRESOLVED_SLOPE}", "unresolved:#0"),
+        ("input:Water Fresnel", "unresolved:#1"),
+        ("unresolved:Value", "rough_slope:#0"),
+        ("rough_slope:Value", "rough_v:#0"),
+        ("cos:Value", "abs_cos:#0"),
+        ("abs_cos:Value", "rough_u:#0"),
+        ("rough_u:Value", "rough_uv:X"),
+        ("rough_v:Value", "rough_uv:Y"),
+        ("rough_uv:Vector", "rough_table:Vector"),
+        ("underside:Refracted", "rough_refracted:#0"),
+        ("rough_table:Color", "rough_refracted:#1"),
+        ("rough_refracted:Value", "F_towards:#0"),
+        ("unresolved:Value", "rough_alpha:#0"),
+        ("rough_alpha:Value", "rough_mirror:#0"),
+        ("rough_mirror:Value", "mirror:Roughness"),
         ("F_seeds:Value", "F_towards:#1"),
         ("F_towards:Value", "F:#0"),
         ("input:Water Fresnel", "F:#1"),
@@ -809,10 +1002,33 @@ FULL_SHADE_SPEC = GroupSpec(
         ("blob_share:Value", "blob_gap:#0"),
         ("blob_tile:Color", "blob_gap:#1"),
         ("blob_gap:Value", "blob:Value"),
-        ("input:Foam", "on_crest:#0"),
+        ("crest_whole:Value", "on_crest:#0"),
         ("blob:Result", "on_crest:#1"),
         ("blob_share:Value", "some:#0"),
-        ("on_crest:Value", "on_some:#0"),
+        ("rest:Vector", "fade_distance:#0"),
+        ("fade_distance:Value", "fade_near:Value"),
+        (f"input:{FADE_START_INPUT}", "fade_near:From Min"),
+        (f"input:{FADE_END_INPUT}", "fade_near:From Max"),
+        ("fade_near:Result", "near_floor:#0"),
+        ("input:Foam", "crest_whole:#0"),
+        ("near_floor:Value", "crest_whole:#1"),
+        ("cap_across:Value", "pick_u:#0"),
+        ("cap_along:Value", "pick_v:#0"),
+        ("pick_u:Value", "pick_uv:X"),
+        ("pick_v:Value", "pick_uv:Y"),
+        ("pick_uv:Vector", "pick_tile:Vector"),
+        ("fade_near:Result", "crests_here:#0"),
+        ("pick_tile:Color", "crests_here:#1"),
+        ("cap_share:Value", "far_share:#0"),
+        ("far_share:Value", "far_gap:#0"),
+        ("blob_tile:Color", "far_gap:#1"),
+        ("far_gap:Value", "far_blob:Value"),
+        ("on_crest:Value", "caps_change:#0"),
+        ("far_blob:Result", "caps_change:#1"),
+        ("caps_change:Value", "caps:#0"),
+        ("crests_here:Value", "caps:#1"),
+        ("far_blob:Result", "caps:#2"),
+        ("caps:Value", "on_some:#0"),
         ("some:Value", "on_some:#1"),
         ("on_some:Value", "crest:#0"),
         ("lace_tile:Color", "cap_sum:#0"),

@@ -123,6 +123,7 @@ def make_ocean_material(name="Ocean", scene=None):
     output = tree.nodes.new("ShaderNodeOutputMaterial")
     output.location = (300, 0)
     tree.links.new(normal.outputs["Normal"], shade.inputs["Normal"])
+    tree.links.new(normal.outputs[ocean.UNRESOLVED_SLOPE], shade.inputs[ocean.UNRESOLVED_SLOPE])
     if lookup is not None:
         tree.links.new(normal.outputs["Reflection"], lookup)
     tree.links.new(sky.outputs[0], shade.inputs["Sky"])

@@ -33,14 +33,15 @@ def has_pixels(image):
     return image.source == "GENERATED"
 
 
-def ensure(name, version_key, version, rgba):
-    """The packed Non-Color image `name` at `version`; `rgba(size)` makes its pixels when needed."""
+def ensure(name, version_key, version, rgba, size=SIZE, float_buffer=False):
+    """The packed Non-Color image `name` at `version`; `rgba(size)` makes its pixels when needed
+    (a float image, for a table whose values must stay exact, is packed as OpenEXR)."""
     image = find(name, version_key)
     if image is not None and image.get(version_key, 0) >= version and has_pixels(image):
         return image
-    fresh = bpy.data.images.new(name, SIZE, SIZE, alpha=False, float_buffer=False)
+    fresh = bpy.data.images.new(name, size, size, alpha=False, float_buffer=float_buffer)
     fresh.colorspace_settings.name = "Non-Color"
-    fresh.pixels.foreach_set(rgba(SIZE).ravel())
+    fresh.pixels.foreach_set(rgba(size).ravel())
     fresh.update()
     # Packing writes the pixels into the .blend, so renders need neither the add-on nor a file on disk.
     fresh.pack()

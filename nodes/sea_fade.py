@@ -13,7 +13,8 @@ so the share holds whatever the wind, spectrum, scale or seed (the Ocean modifie
 far from a normal spread: a few waves near the peak carry most of them). There the point
 attribute `water_whitecaps` is 1, fading with distance like the waves (`water_crest` keeps the
 crests before the foam they leave behind is added): the ocean shading scatters whitecaps over
-these crests, as many as the wind raises (`ocean.py`).
+these crests, as many as the wind raises, and past the fade as many again where it marks none
+(`ocean.py`).
 """
 
 from .spec import GroupSpec, Node, Socket, math, vmath

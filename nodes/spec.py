@@ -17,6 +17,8 @@ BUMP_IMAGE = "<bump image>"
 FOAM_IMAGE = "<foam image>"
 # Stands for the add-on's caustic tile (`caustics_image.py`'s own).
 CAUSTICS_IMAGE = "<caustics image>"
+# Stands for the add-on's rough Fresnel table (`rough_fresnel_image.py`'s own).
+ROUGH_FRESNEL_IMAGE = "<rough fresnel image>"
 
 
 @dataclass(frozen=True)
@@ -115,7 +117,7 @@ class GroupSpec:
         return [node.group for node in self.nodes.values() if node.group]
 
     def slots(self, placeholder):
-        """Keys of the nodes with `placeholder` (`BUMP_IMAGE`, `FOAM_IMAGE`, `CAUSTICS_IMAGE`) among
+        """Keys of the nodes with `placeholder` (`BUMP_IMAGE`, `FOAM_IMAGE`, `CAUSTICS_IMAGE`, ...) among
         their properties."""
         return [key for key, node in self.nodes.items() if placeholder in node.props.values()]
 

@@ -1,7 +1,8 @@
-"""Issue 38 point 2 (part): with `Water Fresnel` 1 the open sea reflects as water does, by its
-refractive index: 2% of the sky looking straight down, most of it only at grazing angles, so the
-sea near a boat is dark and the far sea bright. The seeds' ocean keeps the seeds' Fresnel. (Not yet
-the open sea's default: with it the row means of test_sea_band.py leave 3%, docs/MODEL.md 10.)
+"""Issue 38 point 2: the open sea reflects as water does, by its refractive index (its
+`Water Fresnel` 1, set when the sea is made): 2% of the sky looking straight down, most of it only
+at grazing angles, so the sea near a boat is dark and the far sea bright. The seeds' ocean keeps
+the seeds' Fresnel. (Far off, where EEVEE's mipmaps average the bump's slopes away, the shade
+gives back their mean reflectance: test_sea_band.py.)
 
 A calm open sea (3 m/s, no whitecaps) under a plain sky S, seen from 3 m up over a wide view from
 steep to grazing. Each pixel's ray meets the sea at an angle θ to the vertical; numpy's colour
@@ -42,7 +43,7 @@ def _render_calm_sea(engine, render, preset):
     camera = harness.add_camera(scene, (0.0, 0.0, 3.0), (0.0, 10.0, 0.2), lens=12.0)
     camera.data.clip_end = 30000.0
     shade = harness.addon("nodes.ocean_material").ocean_nodes(added.material)[1]
-    shade.inputs["Water Fresnel"].default_value = 1.0 if preset == "open_sea" else 0.0
+    # The open sea as it is made (Water Fresnel 1); the seeds' ocean as it is made (0).
     deep = np.array(shade.inputs["Deep Color"].default_value[:3])
     pixels = render(scene, f"calm_{preset}_{engine}", exr=True)[..., :3]
     _origin, directions = harness.pixel_rays(scene, camera)

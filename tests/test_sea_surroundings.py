@@ -222,14 +222,17 @@ def test_the_bed_shows_through_shallow_sea_and_fades_with_depth(shore, renders):
 @pytest.mark.render
 def test_shore_foam_lines_the_waterline_and_none_further_out(shore, renders):
     """Turning the foam off darkens pixels within Foam Width (as `read_values` reads it) of the
-    waterline, and none 3 m beyond it."""
+    waterline, and none 3 m beyond it. Darkens by more than 0.02: the white lace over sand seen
+    through a hand's depth of water (about 0.69 here, water reflecting 2% of the sky looking
+    down) is only a little brighter than the sand where it thins out; 3 m beyond, nothing
+    changes at all (the shade mixes no foam)."""
     x, inside = _ground(shore)
     width = harness.addon("api").read_values(shore["sea"])["foam_width"]
     near = inside & (x > WATERLINE_X + 0.2) & (x < WATERLINE_X + 0.6 * width)
     far = inside & (x > WATERLINE_X + width + 3.0) & (x < WATERLINE_X + width + 6.0)
     darker = (renders["made"] - renders["no_foam"]).mean(axis=-1)
-    share_near = float((darker[near] > 0.05).mean())
-    share_far = float((darker[far] > 0.05).mean())
+    share_near = float((darker[near] > 0.02).mean())
+    share_far = float((darker[far] > 0.02).mean())
     print(f"foam-covered share: within the foam width {share_near:.3f}, 3-6 m beyond it {share_far:.3f}")
     assert share_near > 0.3 and share_far == 0.0
 

@@ -119,6 +119,36 @@ def test_whitecaps_cover_as_much_of_the_sea_as_monahan_measured(foam, render, wi
     assert 0.5 * _monahan(wind) < share < 2.0 * _monahan(wind)
 
 
+def test_past_the_fade_the_flat_far_sea_has_as_many_whitecaps(foam, sea_scene, render):
+    """At 20 m/s, a square as wide as the middle's, straight down past the sea's Fade End (the
+    mesh flat, its crests unmarked): whitecap foam covers as much of it as of the middle, within
+    a third, at a moment (the far whitecaps stand where they are: one is enough); before, none.
+    Its whitecaps metres across too, not specks."""
+    views, pixel = foam(20.0, render)
+    middle = np.mean([(view > 0.5).mean() for view in views])
+    scene = sea_scene
+    sea = _foam_view_sea(scene, 20.0)  # the same sea as the middle's views
+    fade = harness.addon("water.sea.open_sea").sea_modifiers(sea)[1]
+    end = harness.addon("water.waves").get_wave_input(fade, "Fade End")
+    camera = bpy.data.objects["Down"]
+    span = camera.data.ortho_scale
+    camera.location = (-0.6 * (end + span), 0.8 * (end + span), camera.location.z)
+    try:
+        far = render(scene, "foam_far_20")[..., 0]
+    finally:
+        camera.location = (0.05 * span, -0.03 * span, camera.location.z)
+    white = far > 0.5
+    labels = _label(_grow(white))
+    sizes = np.bincount(labels.ravel())[1:]
+    sizes = sizes[sizes > 0] * pixel**2
+    print(
+        f"20 m/s: whitecaps {white.mean():.4f} of the far sea ({end + span:.0f} m out), "
+        f"{middle:.4f} of the middle; median whitecap there {np.median(sizes):.1f} m^2"
+    )
+    assert abs(white.mean() / middle - 1.0) < 1.0 / 3.0
+    assert np.median(sizes) >= 0.5
+
+
 @pytest.mark.parametrize("wind", [5.0])
 def test_light_winds_raise_next_to_no_whitecaps(foam, render, wind):
     """Under 0.1% of the sea (Monahan's fit gives 0.09% at 5 m/s; the add-on's coverage fades

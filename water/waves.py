@@ -66,6 +66,12 @@ def input_property(modifier, name):
     return modifier, f'["{identifier}"]'
 
 
+def input_path(modifier, name):
+    """The path from the object to one modifier input's value, for a driver's variable."""
+    owner, path = input_property(modifier, name)
+    return owner.path_from_id(path) if path == "value" else modifier.path_from_id() + path
+
+
 def set_wave_input(modifier, name, value):
     """Sets one modifier input by name (e.g. "Amplitude 2") and refreshes the object."""
     owner, path = input_property(modifier, name)

@@ -296,7 +296,8 @@ def drive_slopes(obj, ocean, first=False):
     """The ocean shading's bump follows the sea's wind: its slopes along and across the wind are
     Cox and Munk's for the wind speed, its wind direction the modifier's (simple-expression
     drivers on the modifier's settings, so changing the wind in the panel changes them too).
-    Bump Strength becomes 1 when the sea is made (a multiplier the artist may change after).
+    Bump Strength becomes 1 when the sea is made (a multiplier the artist may change after), and
+    the shade's Water Fresnel 1 (water's own reflectance).
     The whitecaps' coverage follows the wind the same way (`whitecaps.py`)."""
     drive_whitecaps(obj, ocean, sea_modifiers(obj)[1])
     normal = next((nodes[0] for slot in obj.material_slots if (nodes := ocean_nodes(slot.material))), None)
@@ -307,6 +308,9 @@ def drive_slopes(obj, ocean, first=False):
     if first:
         normal.inputs["Bump Strength"].default_value = 1.0
         normal.inputs["Even Slopes"].default_value = 1.0
+        shade = next(nodes[1] for slot in obj.material_slots if (nodes := ocean_nodes(slot.material)))
+        if "Water Fresnel" in shade.inputs:  # water's own reflectance: the near sea dark, the far bright
+            shade.inputs["Water Fresnel"].default_value = 1.0
     path = f'modifiers["{bpy.utils.escape_identifier(ocean.name)}"]'
     speed = [("u", "OBJECT", obj, f"{path}.wind_velocity")]
     angle = [("a", "OBJECT", obj, f"{path}.wave_direction")]
