@@ -10,7 +10,7 @@ whatever extension repository it was installed into::
     added = water_api.add_water(preset="windy_river", size=40)
 
 Bad input raises PresetError, AddWaterError, MirrorSetupError, SurroundingsError, PhysicalCausticsError,
-FloatError, RemoveWaterError, OpenSeaError,
+FloatError, KeepOutError, WakeError, RemoveWaterError, OpenSeaError,
 NotEditableError (linked or overridden data, never edited) or FileJobError, each with a one-line
 message; nothing is left half made.
 """

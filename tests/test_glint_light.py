@@ -115,7 +115,7 @@ def test_the_only_sun_highlight_is_the_glint(lake, render, elevation, azimuth, c
     near = _window(col, row, (72, 72)) & _water_mask(lake)
     views = _views(lake, render, f"sun{elevation:.0f}", (1,))
     if not _sun_link().eevee_honours_light_linking():
-        # Blender 4.2's EEVEE ignores light linking: the lamp's highlight stays (README, "One sun highlight").
+        # Blender 4.2's EEVEE ignores light linking: the lamp's highlight stays (README, Known limits).
         print(f"lamp highlight at {elevation:.0f} degrees: {views[1][near].max():.0f}")
         assert views[1][near].max() > 5  # measured 2618 at 45 degrees (4.2.23; 9300 with the default sun)
         return
