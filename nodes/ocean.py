@@ -78,6 +78,17 @@ def _tile_read(key, tile, column, label, interpolation="Linear"):
     }
 
 
+def _bubble(label):
+    """A whitecap's bubble from `share - B`: 0 outside, 1 inside, over WHITECAP_BLOB_SOFTNESS."""
+    return Node(
+        "ShaderNodeMapRange",
+        30,
+        {"interpolation_type": "LINEAR", "clamp": True},
+        {1: -WHITECAP_BLOB_SOFTNESS / 2, 2: WHITECAP_BLOB_SOFTNESS / 2, 3: 0.0, 4: 1.0},
+        label=label,
+    )
+
+
 def _tile_links(key):
     return (
         ("cap_along:Value", f"{key}_u:#0"),
@@ -823,13 +834,7 @@ FULL_SHADE_SPEC = GroupSpec(
         "cap_share": math("MULTIPLY", 27, "Whitecaps x Whitecap Coverage"),
         "blob_share": math("MULTIPLY", 28, "s: bubbles' share", b=WHITECAP_BLOB_GAIN),
         "blob_gap": math("SUBTRACT", 29, "s - B"),
-        "blob": Node(
-            "ShaderNodeMapRange",
-            30,
-            {"interpolation_type": "LINEAR", "clamp": True},
-            {1: -WHITECAP_BLOB_SOFTNESS / 2, 2: WHITECAP_BLOB_SOFTNESS / 2, 3: 0.0, 4: 1.0},
-            label="a whitecap's bubble",
-        ),
+        "blob": _bubble("a whitecap's bubble"),
         "on_crest": math("MULTIPLY", 31, "on a crest x bubble"),
         "fade_distance": vmath("LENGTH", 25, "distance from the sea's centre"),
         "fade_near": Node(
@@ -852,13 +857,7 @@ FULL_SHADE_SPEC = GroupSpec(
         "caps_change": math("SUBTRACT", 31, "crests' - far"),
         "far_share": math("MULTIPLY", 28, "far bubbles' share", b=FAR_CAP_GAIN),
         "far_gap": math("SUBTRACT", 29, "far share - B"),
-        "far_blob": Node(
-            "ShaderNodeMapRange",
-            30,
-            {"interpolation_type": "LINEAR", "clamp": True},
-            {1: -WHITECAP_BLOB_SOFTNESS / 2, 2: WHITECAP_BLOB_SOFTNESS / 2, 3: 0.0, 4: 1.0},
-            label="a far whitecap's bubble",
-        ),
+        "far_blob": _bubble("a far whitecap's bubble"),
         "caps": math("MULTIPLY_ADD", 31, "the crests' or the far whitecaps"),
         # No share, no whitecap: the bubble's soft edge would otherwise keep a few.
         "some": math("MULTIPLY", 30, "any share?", clamp=True, b=1.0 / WHITECAP_BLOB_SOFTNESS),
