@@ -220,10 +220,8 @@ def _repeat_share(water, eye, forward, right, tile):
 
 
 def _height_below(water, point, depsgraph):
-    evaluated = water.evaluated_get(depsgraph)
-    start = evaluated.matrix_world.inverted() @ Vector((point[0], point[1], point[2] + 100.0))
-    hit, location, _normal, _index = evaluated.ray_cast(start, Vector((0.0, 0.0, -1.0)))
-    return (evaluated.matrix_world @ location).z if hit else 0.0
+    height = harness.surface_below(water, point[0], point[1], depsgraph)
+    return 0.0 if height is None else height
 
 
 def test_no_two_points_a_tile_apart_both_carry_waves_within_a_frame(scene):

@@ -1,20 +1,22 @@
 """No band where the open sea's waves fade out (issue 38 point 4): from 3, 12, 40 and 150 m up
-under a plain sky, at 5 and 15 m/s (and 25 m/s from 12 m up), the mean of each row of sea pixels
-stays within 3% of a smooth curve through them (a quartic in the row), from the foreground to
-the horizon. The far sea, flat past half a tile, is shaded by the bump alone, whose slopes are
-the sea's (test_sea_slopes.py); where EEVEE's mipmaps average them away the shade gives back
-their mean reflectance (`rough_fresnel.py`), so the far sea is as bright as Cycles', which sees
-every ripple, not a flat mirror (it was 18% brighter at 12 m up, the band where the waves start).
-Averaged over moments (eight from 3 m up, where single waves fill rows), so one big wave in the
+under a plain sky, at 5, 15 and 25 m/s, the mean of each row of sea pixels stays within 3% of a
+smooth curve through them (a quartic in the row), from the foreground to the horizon. The far
+sea, flat past half a tile, is shaded by the bump alone, whose slopes are the sea's
+(test_sea_slopes.py); where EEVEE's mipmaps average them away the shade gives back their mean
+reflectance (`rough_fresnel.py`), so the far sea is as bright as Cycles', which sees every
+ripple, not a flat mirror (it was 18% brighter at 12 m up, the band where the waves start).
+Averaged over moments (sixteen from 3 m up, where single waves fill rows), so one big wave in the
 foreground is not a band.
-The wind (0.8, 0.6) is off the view's axis.
+The wind (0.8, 0.6) is off the view's axis. The camera rides the sea as one on a boat does:
+"h m up" is over the surface under it at each moment. At 25 m/s the significant height is near
+13 m, so a camera held 3 m over the rest level was inside the waves (a frame facing a crest, one
+veiled by the surface at the lens).
 
 At 25 m/s a third of the sea is foam: past the fade, where the flat mesh marks no crests, the
 shade spreads as many whitecaps (before, the far rows had none: a band 4.4% deep 40 m up); four
-moments each, seconds apart (the foam's patches are larger than a row). Not held: 25 m/s from
-3 m up, where single streaks cross the near rows (3.1% over eight moments); and software EEVEE
-(llvmpipe) never finishes that view's frame 201 (its shader loops, before this change too), so
-no frame of it is rendered here.
+moments each from 12 m up and higher, seconds apart (the foam's patches are larger than a row).
+Software EEVEE (llvmpipe) never finishes one gale frame with the camera held 3 m over the rest
+level (201; its shader loops, README's known limits); riding the sea, none here hangs.
 """
 
 import bpy
@@ -26,10 +28,11 @@ import harness
 pytestmark = pytest.mark.render
 
 WINDS = (5.0, 15.0, 25.0)
-# Moments per height: more where the camera is low and single waves fill rows.
-FRAMES = {3.0: (1, 21, 41, 61, 81, 101, 121, 141), 12.0: (1, 41), 40.0: (1, 41), 150.0: (1,)}
+# Moments per height: more where the camera is low and single waves fill rows (from 3 m up one
+# moment's rows stray 4-9% from the curve, so sixteen, 23 frames apart, bring that under 2%).
+FRAMES = {3.0: tuple(1 + 23 * k for k in range(16)), 12.0: (1, 41), 40.0: (1, 41), 150.0: (1,)}
 GALE = 25.0
-GALE_FRAMES = {12.0: (1, 21, 41, 61), 40.0: (1, 21, 41, 61), 150.0: (1, 81, 161, 241)}
+GALE_FRAMES = {3.0: FRAMES[3.0], 12.0: (1, 21, 41, 61), 40.0: (1, 21, 41, 61), 150.0: (1, 81, 161, 241)}
 
 
 def _frames(wind):
@@ -38,10 +41,16 @@ def _frames(wind):
 
 def _sea(scene, wind):
     harness.set_world_color(scene, (0.45, 0.6, 0.8), 1.0)
-    harness.addon("api").add_water(scene, preset="open_sea", sea_wind_speed=wind, wind_direction=(0.8, 0.6))
+    return (
+        harness.addon("api")
+        .add_water(scene, preset="open_sea", sea_wind_speed=wind, wind_direction=(0.8, 0.6))
+        .object
+    )
 
 
-def _row_means(scene, height, frames, tag):
+def _row_means(scene, water, height, frames, tag):
+    """Row means of the sea's pixels, horizon first, over `frames`, the camera `height` over the
+    surface under it (it keeps its heading and pitch, so the same rows are the sea's)."""
     camera = harness.add_camera(scene, (0.0, 0.0, height), (300.0, 1000.0, height - 90.0), lens=28.0)
     camera.data.clip_end = 30000.0
     scene.camera = camera
@@ -50,6 +59,8 @@ def _row_means(scene, height, frames, tag):
     means = []
     for frame in frames:
         scene.frame_set(frame)
+        camera.location.z = harness.surface_below(water, 0.0, 0.0) + height
+        bpy.context.view_layer.update()
         image = harness.render(scene, bpy.app.tempdir + f"band_{tag}_{height:g}_{frame}.png")
         means.append(image[sea_rows, :, :3].mean(axis=(1, 2)))
     return np.mean(means, axis=0)
@@ -59,16 +70,14 @@ def _row_means(scene, height, frames, tag):
 def rows(request, addon, eevee):
     """(wind, {height: row means of sea pixels, horizon first, averaged over the moments})."""
     scene = harness.clean_scene(engine=eevee, width=160, height=90, samples=1)
-    _sea(scene, request.param)
+    water = _sea(scene, request.param)
     frames = _frames(request.param)
-    return request.param, {h: _row_means(scene, h, frames[h], f"{request.param:g}") for h in frames}
+    return request.param, {h: _row_means(scene, water, h, frames[h], f"{request.param:g}") for h in frames}
 
 
 @pytest.mark.parametrize("height", tuple(FRAMES))
 def test_the_sea_s_brightness_changes_smoothly_to_the_horizon(rows, height):
     wind, found = rows
-    if height not in found:
-        pytest.skip(f"{wind:g} m/s from {height:g} m up: not held (see the module's note)")
     means = found[height]
     x = np.arange(len(means))
     smooth = np.polyval(np.polyfit(x, means, 4), x)
@@ -88,8 +97,8 @@ def test_the_far_sea_in_eevee_is_as_bright_as_in_cycles(addon, eevee):
     found = {}
     for engine in (eevee, "CYCLES"):
         scene = harness.clean_scene(engine=engine, width=160, height=90, samples=1 if engine == eevee else 16)
-        _sea(scene, 15.0)
-        found[engine] = _row_means(scene, 12.0, (1,), engine)[:8].mean()
+        water = _sea(scene, 15.0)
+        found[engine] = _row_means(scene, water, 12.0, (1,), engine)[:8].mean()
     ratio = found[eevee] / found["CYCLES"]
     print(f"the far sea, 12 m up: EEVEE {found[eevee]:.3f}, Cycles {found['CYCLES']:.3f} ({ratio:.3f})")
     assert abs(ratio - 1.0) < 0.08

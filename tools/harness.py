@@ -296,6 +296,20 @@ def hit_plane_z(origin, directions, z=0.0):
     return hits, np.isfinite(t) & (t > 0)
 
 
+def surface_below(water, x, y, depsgraph=None):
+    """The world z of `water`'s evaluated surface under (x, y) (a ray cast down from 100 m over
+    its origin), or None where no face is there: what a camera "h m up" over waves stands on."""
+    import bpy
+    from mathutils import Vector
+
+    evaluated = water.evaluated_get(depsgraph or bpy.context.evaluated_depsgraph_get())
+    inverse = evaluated.matrix_world.inverted()
+    top = evaluated.matrix_world.translation.z + 100.0
+    down = (inverse.to_3x3() @ Vector((0.0, 0.0, -1.0))).normalized()
+    hit, location, _normal, _index = evaluated.ray_cast(inverse @ Vector((x, y, top)), down)
+    return (evaluated.matrix_world @ location).z if hit else None
+
+
 def blender_output(action):
     """(what Blender's C code prints on fd 1 and 2 while `action` runs, `action`'s result): how a
     test reads messages such as "Dependency cycle" that never reach Python."""
