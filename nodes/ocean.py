@@ -140,6 +140,11 @@ FADE_START_INPUT = "Fade Start"
 FADE_END_INPUT = "Fade End"
 FADE_NEVER = 1.0e6
 FAR_CAP_GAIN = 1.0 / (WHITECAP_FOAM - foam_map.SOFTNESS / 2)
+# The far bubbles are where either of two reads of the tile, B and B2, is low (min(B, B2) < t,
+# t = 1 - sqrt(1 - share)): one read alone repeats every tile width across the wind, long
+# parallel stripes seen from high up; B2's tile is drawn other ways (along and across the wind,
+# no simple ratio to B's), so the two together repeat nowhere in sight.
+FAR_SECOND_READ = (1.27, 0.79)
 PICK_TILE = (37.0, 53.0)  # metres across and along the wind: no multiple of the other reads
 
 UNRESOLVED_SLOPE = "Unresolved Slope"
@@ -708,8 +713,9 @@ FULL_SHADE_SPEC = GroupSpec(
     # EEVEE fills with the world); 12: `Unresolved Slope` (with Water Fresnel: water's mean
     # reflectance over the slopes EEVEE's mipmaps averaged away, `rough_fresnel.py`, and a mirror
     # as much rougher); past the sea's fade (`Fade Start`, `Fade End`), whitecaps where the mesh
-    # marks no crests (the far sea was bare: at 25 m/s a band 40 m up)
-    version=12,
+    # marks no crests (the far sea was bare: at 25 m/s a band 40 m up); 13: the far whitecaps from
+    # two reads of the tile (one alone repeated across the wind: stripes from high up)
+    version=13,
     description="Ocean colour: deep blue and the reflected sky by the ocean Fresnel, plus the glint; "
     "white lit foam on the crests; with the surroundings, the bed seen through shallow water, "
     "shore foam and caustics",
@@ -855,8 +861,18 @@ FULL_SHADE_SPEC = GroupSpec(
         "pick_tile": water_surface.foam_tile(29, "foam tile R (crests' or far whitecaps)", "Closest"),
         "crests_here": math("GREATER_THAN", 30, "near > R: the crests' whitecaps"),
         "caps_change": math("SUBTRACT", 31, "crests' - far"),
-        "far_share": math("MULTIPLY", 28, "far bubbles' share", b=FAR_CAP_GAIN),
-        "far_gap": math("SUBTRACT", 29, "far share - B"),
+        "far_share": math("MULTIPLY", 28, "far bubbles' share", b=FAR_CAP_GAIN, clamp=True),
+        "far_keep": math("SUBTRACT", 28, "1 - share", a=1.0),
+        "far_root": math("SQRT", 28, "sqrt(1 - share)"),
+        "far_cut": math("SUBTRACT", 29, "t = 1 - sqrt(1 - share)", a=1.0),
+        "far_length": math("MULTIPLY", 26, "B2's length", b=FAR_SECOND_READ[0]),
+        "far_width": math("MULTIPLY", 26, "B2's width", b=FAR_SECOND_READ[1]),
+        "far2_u": math("DIVIDE", 27, "along / B2's length"),
+        "far2_v": math("DIVIDE", 27, "across / B2's width"),
+        "far2_uv": Node("ShaderNodeCombineXYZ", 28),
+        "far2_tile": water_surface.foam_tile(29, "foam tile B2 (far whitecaps, second read)", "Closest"),
+        "far_either": math("MINIMUM", 29, "min(B, B2)"),
+        "far_gap": math("SUBTRACT", 29, "t - min(B, B2)"),
         "far_blob": _bubble("a far whitecap's bubble"),
         "caps": math("MULTIPLY_ADD", 31, "the crests' or the far whitecaps"),
         # No share, no whitecap: the bubble's soft edge would otherwise keep a few.
@@ -1019,8 +1035,22 @@ FULL_SHADE_SPEC = GroupSpec(
         ("fade_near:Result", "crests_here:#0"),
         ("pick_tile:Color", "crests_here:#1"),
         ("cap_share:Value", "far_share:#0"),
-        ("far_share:Value", "far_gap:#0"),
-        ("blob_tile:Color", "far_gap:#1"),
+        ("far_share:Value", "far_keep:#1"),
+        ("far_keep:Value", "far_root:#0"),
+        ("far_root:Value", "far_cut:#1"),
+        ("blob_length:Value", "far_length:#0"),
+        ("blob_width:Value", "far_width:#0"),
+        ("cap_along:Value", "far2_u:#0"),
+        ("far_length:Value", "far2_u:#1"),
+        ("cap_across:Value", "far2_v:#0"),
+        ("far_width:Value", "far2_v:#1"),
+        ("far2_u:Value", "far2_uv:X"),
+        ("far2_v:Value", "far2_uv:Y"),
+        ("far2_uv:Vector", "far2_tile:Vector"),
+        ("blob_tile:Color", "far_either:#0"),
+        ("far2_tile:Color", "far_either:#1"),
+        ("far_cut:Value", "far_gap:#0"),
+        ("far_either:Value", "far_gap:#1"),
         ("far_gap:Value", "far_blob:Value"),
         ("on_crest:Value", "caps_change:#0"),
         ("far_blob:Result", "caps_change:#1"),
