@@ -34,24 +34,52 @@ LTS_ELSEWHERE = {
     "test_surroundings.py": ("test_the_modifier_survives_save_and_reload_without_the_add_on",),
 }
 
+# The quick loop (`tools/test --quick`, `-m quick`): one test of each feature, the cheap ones, so
+# the one writing code hears in a few minutes whether anything is broken; CI runs every test.
+QUICK = {
+    "test_extension.py": ("test_built_zip_validates_and_holds_only_the_addon",),
+    "test_add_water.py": ("test_adds_a_uv_mapped_plane_with_the_water_material_at_the_cursor",),
+    "test_kinds.py": ("test_the_operators_and_the_api_refuse_the_same_things",),
+    "test_presets.py": ("test_written_presets_read_back_equal",),
+    "test_water_shader.py": ("test_final_view_is_the_composition_of_the_debug_views",),  # the lake, rendered
+    "test_surroundings.py": ("test_depth_and_shore_distance_match_the_bed_and_the_post",),
+    "test_open_sea.py": ("test_the_open_sea_moves_with_the_clock_and_its_waves_and_foam_grow_with_the_wind",),
+    "test_float_footprint.py": (
+        "test_waves_four_hulls_long_pitch_it_as_its_footprint_and_it_keeps_its_draft",
+    ),
+    "test_wake.py": (
+        "test_floating_and_stopping_keep_the_wake_without_a_cycle_and_a_deleted_hull_leaves_none",
+    ),
+    "test_keep_water_out.py": ("test_operator_panel_again_after_a_change_of_shape_and_let_in",),
+    "test_underwater_switch.py": ("test_the_switch_takes_the_body_away_and_brings_it_back_with_the_samples",),
+    "test_caustic_light.py": ("test_the_light_comes_and_goes_with_the_caustics",),
+    "test_cli.py": ("test_add_writes_a_new_file_with_water_and_prints_what_it_did",),
+    "test_saved_file.py": ("test_saved_water_renders_the_same_without_the_add_on_and_with_auto_run_off",),
+}
 
-@pytest.hookimpl(tryfirst=True)  # before `-m` deselects by marks
-def pytest_collection_modifyitems(config, items):
+
+def _mark_by_name(items, table, mark, name):
     marked = set()
     for item in items:
-        if item.originalname in LTS_ELSEWHERE.get(item.path.name, ()):
-            item.add_marker(pytest.mark.lts)
+        if item.originalname in table.get(item.path.name, ()):
+            item.add_marker(mark)
             marked.add((item.path.name, item.originalname))
     collected = {item.path.name for item in items}
     missing = [
-        f"{name}::{test}"
-        for name, tests in LTS_ELSEWHERE.items()
-        if name in collected
+        f"{file}::{test}"
+        for file, tests in table.items()
+        if file in collected
         for test in tests
-        if (name, test) not in marked
+        if (file, test) not in marked
     ]
-    if missing:  # a renamed test would silently leave the older versions' subset
-        raise pytest.UsageError(f"tests/conftest.py LTS_ELSEWHERE names tests that do not exist: {missing}")
+    if missing:  # a renamed test would silently leave the subset
+        raise pytest.UsageError(f"tests/conftest.py {name} names tests that do not exist: {missing}")
+
+
+@pytest.hookimpl(tryfirst=True)  # before `-m` deselects by marks
+def pytest_collection_modifyitems(config, items):
+    _mark_by_name(items, LTS_ELSEWHERE, pytest.mark.lts, "LTS_ELSEWHERE")
+    _mark_by_name(items, QUICK, pytest.mark.quick, "QUICK")
 
 
 @pytest.fixture(scope="session")
@@ -78,11 +106,32 @@ def scene(addon, eevee):
     return harness.clean_scene(engine=eevee)
 
 
+# Renders seen since the test's setup began (a persistent handler: loading a file keeps it), so a
+# test that renders without the `render` mark fails: the mark is how a quick run leaves them out.
+_RENDERS = []
+
+
+@bpy.app.handlers.persistent
+def _note_render(*_):
+    _RENDERS.append(True)
+
+
+bpy.app.handlers.render_init.append(_note_render)
+
+
 @pytest.hookimpl(hookwrapper=True)
 def pytest_runtest_makereport(item, call):
     outcome = yield
     report = outcome.get_result()
+    if report.when == "call" and _RENDERS and report.passed and item.get_closest_marker("render") is None:
+        report.outcome = "failed"
+        report.longrepr = f"{item.nodeid} renders but is not marked `render` (pytest.mark.render)"
     setattr(item, f"report_{report.when}", report)
+
+
+@pytest.hookimpl(tryfirst=True)
+def pytest_runtest_setup(item):
+    _RENDERS.clear()
 
 
 @pytest.fixture

@@ -44,6 +44,7 @@ def test_add_writes_a_new_file_with_water_and_prints_what_it_did(cli, saved, tmp
 
 
 @pytest.mark.lts
+@pytest.mark.render
 def test_render_writes_the_image_of_one_frame(cli, saved, tmp_path, capsys):
     with_water = tmp_path / "with_water.blend"
     # A fully dull red water: unmistakable against the blue sky.

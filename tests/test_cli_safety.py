@@ -185,6 +185,7 @@ def _job(files, name, shot, tmp_path):
     return target
 
 
+@pytest.mark.render
 @pytest.mark.parametrize("saved_before", [False, True], ids=["untitled", "saved_then_changed"])
 @pytest.mark.parametrize("name", ["add", "render"])
 def test_a_job_leaves_the_callers_open_file_as_it_was(files, shot, tmp_path, name, saved_before):
@@ -215,6 +216,7 @@ def test_a_failing_job_also_leaves_the_callers_open_file_as_it_was(files, shot, 
     assert not (tmp_path / "frame.png").exists()
 
 
+@pytest.mark.render
 def test_the_command_line_keeps_no_session(cli, shot, tmp_path, capsys):
     _my_work()
     target = tmp_path / "frame.png"

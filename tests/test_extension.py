@@ -5,9 +5,26 @@ import bpy
 
 import harness
 
-# Paths a built zip may hold: the add-on and nothing else.
-ADDON_PARTS = ("__init__.py", "blender_manifest.toml", "operators/", "nodes/", "presets/", "ui/", "water/")
-TOOLING = ("tests/", "tools/", ".ci/", "bench/", "docs/", "out/", "README", "pyproject", "venv")
+# The add-on, the whole of what a built zip may hold at its top level (an allow-list: a file added
+# at the repository's top level, CONTRIBUTING.md, a README, pyproject.toml, tests/, tools/, bench/,
+# docs/, .ci/, is not the add-on and must be excluded in the manifest's [build] section).
+ADDON_MODULES = ("__init__.py", "api.py", "cli.py", "engine.py", "handlers.py")
+ADDON_PACKAGES = ("nodes", "operators", "presets", "ui", "water")
+MANIFEST = "blender_manifest.toml"
+ADDON_TOP = {*ADDON_MODULES, MANIFEST, *ADDON_PACKAGES}
+
+
+def _addon_files():
+    """The add-on's files in the repository, as the zip names them: the top-level modules, the
+    manifest and every file of its packages but Python's caches and hidden files."""
+    files = {*ADDON_MODULES, MANIFEST}
+    for package in ADDON_PACKAGES:
+        for path in (harness.ROOT / package).rglob("*"):
+            relative = path.relative_to(harness.ROOT)
+            hidden = any(part.startswith(".") or part == "__pycache__" for part in relative.parts)
+            if path.is_file() and not hidden and path.suffix != ".pyc":
+                files.add(relative.as_posix())
+    return files
 
 
 def test_manifest_validates():
@@ -20,12 +37,14 @@ def test_built_zip_validates_and_holds_only_the_addon(addon_zip):
 
     proc = harness.run_blender_ext("validate", str(addon_zip))
     assert proc.returncode == 0, proc.stdout + proc.stderr
-    names = zipfile.ZipFile(addon_zip).namelist()
-    assert "__init__.py" in names and "blender_manifest.toml" in names
-    leaked = [n for n in names if n.startswith(TOOLING) or "/." in f"/{n}" or n.endswith(".pyc")]
-    assert leaked == []
-    strays = [n for n in names if not (n.startswith(ADDON_PARTS) or "/" not in n)]
-    assert strays == []
+    names = [name for name in zipfile.ZipFile(addon_zip).namelist() if not name.endswith("/")]
+    assert len(names) == len(set(names)), "no file twice"
+    top = {name.split("/", 1)[0] for name in names}
+    assert sorted(top - ADDON_TOP) == [], "at the zip's top level, not the add-on"
+    assert sorted(ADDON_TOP - top) == [], "the add-on's, not in the zip"
+    expected = _addon_files()
+    assert sorted(set(names) - expected) == [], "shipped, not the add-on's"
+    assert sorted(expected - set(names)) == [], "the add-on's, not shipped"
 
 
 def test_installed_from_zip_and_enabled(addon):

@@ -186,7 +186,6 @@ def test_on_the_wind_sea_it_pitches_as_its_footprint_and_is_driven_without_pytho
     ]
 
 
-@pytest.mark.lts  # actions with slots from 4.4, without before
 def _yaw(matrix):
     """The heading of an object's X axis on the plane, radians."""
     x_axis = matrix.to_3x3() @ Vector((1.0, 0.0, 0.0))
@@ -232,6 +231,7 @@ def _follows(hull, depsgraph, want_xy, want_yaw, label):
     assert yaw_off < 0.5 and axis_off < 0.5
 
 
+@pytest.mark.lts  # actions with slots from 4.4, without before
 def test_it_follows_the_hull_moving_and_turning_by_keys_added_after_it_floated(scene):
     """The hull floated still, then keyed moving along a diagonal and turning 0.8 rad: the rig
     follows, its heading and its probes' line turning with the keys."""

@@ -493,6 +493,7 @@ def _emission_material():
     return material
 
 
+@pytest.mark.render
 def test_the_cache_is_evaluated_in_a_render_and_never_rendered(scene, surroundings, render):
     """A render of the water shows the attributes the cache measured (so the render evaluates the
     cache), and equals a render of the water baked into a plain mesh with the cache deleted (so

@@ -902,6 +902,7 @@ def test_a_dry_hull_stays_dry_under_its_own_foam_whichever_came_first(scene):
         assert surface.links[0].from_node.name == "Water Surface"
 
 
+@pytest.mark.render
 def test_rendering_a_file_with_an_unbaked_wake_says_so(scene, tmp_path):
     water = _api().add_water(scene, preset="lake", size=20.0, resolution=41, name="Lake").object
     harness.add_camera(scene, (0.0, -10.0, 6.0), (0.0, 0.0, 0.0))

@@ -174,6 +174,7 @@ def test_a_scaled_and_turned_water_makes_the_same_wake_in_metres(scene):
 
 
 @pytest.mark.lts
+@pytest.mark.render
 def test_a_bake_gone_stale_is_said_in_the_panel_and_when_rendering_the_file(scene, tmp_path):
     """Re-keying the boat, running the scene past the bake's last frame (the wake would freeze
     there) and a bake of one frame (flat on every frame) each leave the bake stale: the panel

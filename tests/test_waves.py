@@ -7,10 +7,28 @@ import pytest
 
 import harness
 
+# SPEC section 2, as written there: the seeds' four waves (amplitude, wavelength, speed, direction in
+# their Y-up (x, z) plane). Written here, not read from the add-on: the group and `wave_math` both
+# take their defaults from `wave_math.DEFAULT_WAVES`, so comparing them with each other alone would
+# pass with the table changed.
+SPEC_WAVES = (
+    (0.3, 10.0, 1.0, (-1.0, 0.0)),
+    (0.4, 5.0, 2.0, (-1.0, 0.5)),
+    (0.2, 15.0, 0.5, (-1.0, 0.7)),
+    (0.3, 7.0, 1.5, (-1.0, -0.5)),
+)
+
 
 @pytest.fixture(scope="module")
 def wave_math(addon):
     return harness.addon("nodes.wave_math")
+
+
+@pytest.fixture(scope="module")
+def seeds(wave_math):
+    """SPEC's table turned Z-up (an XNA vector (x, y, z) is Blender's (x, -z, y): their (x, z) is
+    our (x, -y)), as `wave_math.Wave`s for its sums."""
+    return tuple(wave_math.Wave(a, length, s, (d[0], -d[1])) for a, length, s, d in SPEC_WAVES)
 
 
 @pytest.fixture(scope="module")
@@ -48,27 +66,29 @@ def _angles(a, b):
     return np.degrees(np.arccos(np.clip((a * b).sum(axis=1), -1.0, 1.0)))
 
 
-def test_heights_and_normals_match_the_four_sines_at_two_times(scene, wave_math):
+def test_heights_and_normals_match_the_four_sines_at_two_times(scene, wave_math, seeds):
+    """The ocean preset's waves are SPEC's four, summed by `wave_math` (its formulas checked
+    against SPEC's in tests/plain/test_reference_constants.py)."""
     bpy.ops.object.water_surface_add(preset="ocean", size=60, resolution=97)
     ocean = bpy.context.active_object
     rest = _rest(ocean)
-    amplitude_sum = sum(w.amplitude for w in wave_math.DEFAULT_WAVES)
+    amplitude_sum = sum(a for a, _length, _speed, _direction in SPEC_WAVES)
     for frame in (1, 61):
         scene.frame_set(frame)
         co, normal = _evaluated(ocean)
-        expected = wave_math.heights(rest[:, :2], _seconds(scene))
+        expected = wave_math.heights(rest[:, :2], _seconds(scene), seeds)
         assert np.abs(co[:, 2] - expected).max() < 1e-4 * amplitude_sum, frame
         assert np.abs(co[:, :2] - rest[:, :2]).max() < 1e-5, "points move only up and down"
-        assert _angles(normal, wave_math.normals(rest[:, :2], _seconds(scene))).max() < 1.0
+        assert _angles(normal, wave_math.normals(rest[:, :2], _seconds(scene), seeds)).max() < 1.0
     assert np.ptp(co[:, 2]) > amplitude_sum, "real waves, not a flat sheet"
 
 
 @pytest.mark.lts
-def test_every_wave_input_counts_and_zero_amplitude_removes_a_wave(scene, wave_math, waves):
+def test_every_wave_input_counts_and_zero_amplitude_removes_a_wave(scene, wave_math, waves, seeds):
     bpy.ops.mesh.primitive_circle_add(vertices=64, radius=20, fill_type="TRIFAN")  # any flat mesh
     disc = bpy.context.active_object
     modifier = waves.add_waves(disc)
-    changed = list(wave_math.DEFAULT_WAVES)
+    changed = list(seeds)
     changed[1] = wave_math.Wave(0.0, 5.0, 2.0, (-1.0, -0.5))
     changed[2] = wave_math.Wave(0.9, 3.0, -1.0, (0.3, 1.0))
     waves.set_wave_input(modifier, "Amplitude 2", 0.0)
@@ -82,7 +102,9 @@ def test_every_wave_input_counts_and_zero_amplitude_removes_a_wave(scene, wave_m
     t = _seconds(scene)
     assert np.abs(co[:, 2] - wave_math.heights(rest[:, :2], t, changed)).max() < 1e-4
     assert _angles(normal, wave_math.normals(rest[:, :2], t, changed)).max() < 1.0
-    assert np.abs(co[:, 2] - wave_math.heights(rest[:, :2], t)).max() > 0.1, "the inputs changed the waves"
+    assert np.abs(co[:, 2] - wave_math.heights(rest[:, :2], t, seeds)).max() > 0.1, (
+        "the inputs changed the waves"
+    )
 
 
 def test_with_every_amplitude_zero_the_grid_is_flat(scene, waves):
@@ -98,7 +120,7 @@ def test_with_every_amplitude_zero_the_grid_is_flat(scene, waves):
 
 
 @pytest.mark.lts
-def test_the_lake_combines_with_waves_and_the_panel_finds_their_inputs(scene, waves):
+def test_the_lake_combines_with_waves_and_the_panel_finds_their_inputs(scene, waves, seeds):
     bpy.ops.object.water_surface_add(preset="lake", waves=True, resolution=65, size=40)
     lake = bpy.context.active_object
     modifier = waves.wave_modifier(lake)
@@ -108,8 +130,7 @@ def test_the_lake_combines_with_waves_and_the_panel_finds_their_inputs(scene, wa
     assert {
         f"{kind} {n}" for kind in ("Amplitude", "Wavelength", "Speed", "Direction") for n in range(1, 5)
     } == names
-    defaults = harness.addon("nodes.wave_math").DEFAULT_WAVES
-    for number, wave in enumerate(defaults, 1):  # what the panel draws: every input, readable
+    for number, wave in enumerate(seeds, 1):  # what the panel draws: every input, readable
         owner, path = waves.input_property(modifier, f"Speed {number}")
         assert owner.path_resolve(path) == pytest.approx(wave.speed)
     probe = harness.addon("water.mirror").find_probe(lake)
@@ -180,7 +201,7 @@ def test_the_add_operator_grid_has_the_asked_resolution_and_uvs(scene):
 
 
 @pytest.mark.lts
-def test_saved_ocean_animates_with_the_add_on_disabled(scene, wave_math, tmp_path):
+def test_saved_ocean_animates_with_the_add_on_disabled(scene, wave_math, seeds, tmp_path):
     bpy.ops.object.water_surface_add(preset="ocean", size=20, resolution=17)
     rest = _rest(bpy.context.active_object)
     path = tmp_path / "ocean.blend"
@@ -194,7 +215,7 @@ def test_saved_ocean_animates_with_the_add_on_disabled(scene, wave_math, tmp_pat
         for frame in (5, 40):
             scene.frame_set(frame)
             co, _normal = _evaluated(ocean)
-            assert np.abs(co[:, 2] - wave_math.heights(rest[:, :2], _seconds(scene))).max() < 1e-4
+            assert np.abs(co[:, 2] - wave_math.heights(rest[:, :2], _seconds(scene), seeds)).max() < 1e-4
         node = bpy.data.materials["Water"].node_tree.nodes["Water Ocean Normal"]
         assert node.inputs["Time"].default_value == pytest.approx(_seconds(scene)), "the bump clock runs too"
     finally:

@@ -111,12 +111,13 @@ def foam(sea_scene):
 
 @pytest.mark.parametrize("wind", [10.0, 15.0, 20.0])
 def test_whitecaps_cover_as_much_of_the_sea_as_monahan_measured(foam, render, wind):
-    """Within a factor 2 of W = 3.84e-6 U^3.41 (the white share of the foam view, over three
-    moments): measured 0.98, 0.95, 1.08 of it at 10, 15, 20 m/s."""
+    """Within 25% of W = 3.84e-6 U^3.41 (the white share of the foam view, over three moments):
+    measured 0.98, 0.92, 1.08 of it at 10, 15, 20 m/s (0.0097, 0.0361, 0.1130 of the sea, 5.2.3),
+    so 25% is three times the largest departure seen, a margin for the renders' noise."""
     views, _pixel = foam(wind, render)
     share = np.mean([(view > 0.5).mean() for view in views])
     print(f"{wind:g} m/s: whitecaps {share:.4f} of the sea, Monahan {_monahan(wind):.4f}")
-    assert 0.5 * _monahan(wind) < share < 2.0 * _monahan(wind)
+    assert 0.75 * _monahan(wind) < share < 1.25 * _monahan(wind), share / _monahan(wind)
 
 
 def _repeat_across(view, pixel):
