@@ -4,23 +4,23 @@ outside it, as Cycles does; a scene with no world shows a sky through the window
 A camera 3 m under the open sea (3 m/s, wind off the axes; waves 0.2 m high) looks straight up
 through a 12 mm lens under a white sky, the `Underwater` fog on (the default). numpy's model, per
 pixel at angle θ from straight up: the surface passes `1 - F` of the sky and reflects the deep
-water's colour L (the ocean's Deep Color) at F, F water's own Fresnel from inside (1 past
-asin(1 / 1.33)) at the angle between the ray and the surface's normal, averaged over Cox and Munk's
-slopes for the wind (upwind variance 0.00316 U, crosswind 0.003 + 0.00192 U: the sea's own, see
-test_sea_slopes.py), which blur the window's edge over some 8°; over the path 3 m / cos θ the fog
-keeps `T = exp(-c d)` of that and adds `L (1 - T)`, c the water's Absorption. Averaged in 1° rings
-from 3° out to 61°, edge and all, each ring is within 15% of the model (0.015 at least) per
-channel, in both engines, and the window's edge (where the brightness crosses halfway) found in
+water's colour L (the ocean's Deep Color) at F, F water's own Fresnel from inside (n 1.333, 1 past
+asin(1 / 1.333); `reference_models`) at the angle between the ray and the surface's normal, averaged
+over Cox and Munk's slopes for the wind (upwind variance 0.00316 U, crosswind 0.003 + 0.00192 U: the
+sea's own, see test_sea_slopes.py), which blur the window's edge over some 8°; over the path 3 m /
+cos θ the fog keeps `T = exp(-c d)` of that and adds `L (1 - T)`, c the water's Absorption. Averaged
+in 1° rings from 3° out to 61°, edge and all, each ring is within 15% of the model (0.015 at least)
+per channel, in both engines, and the window's edge (where the brightness crosses halfway) found in
 each render is within 1.5° of the one found the same way in the model (measured: 46.0° in Cycles,
-46.5° in EEVEE, 46.2° in the model; the rings within 12.3% and 13.5%). Before the work EEVEE
-showed the world's white outside the window (the reflection was a glossy, which EEVEE fills from
-the world probe) and no edge at all; a scene with no world showed the window black.
+46.4° in EEVEE, 46.1° in the model; the rings within 13.7% and 12.6%; with the add-on's own index
+1.33 in the model, 46.2°, 12.3% and 13.5%). Before the work EEVEE showed the world's white outside
+the window (the reflection was a glossy, which EEVEE fills from the world probe) and no edge at all;
+a scene with no world showed the window black.
 """
-
-import math
 
 import numpy as np
 import pytest
+from reference_models import WATER_IOR, beer_lambert, cox_munk, critical_angle, fresnel, through_water
 from test_snells_window import LENS, SENSOR_HALF, _edge
 
 import harness
@@ -31,7 +31,7 @@ DEPTH = 3.0
 WIND = 3.0
 SIZE = 48
 RINGS = np.arange(3, 62)  # the pixels nearest the centre are 2.5° off it
-CRITICAL = math.degrees(math.asin(1.0 / 1.33))
+CRITICAL = critical_angle()
 
 
 def _angles(height, width):
@@ -41,21 +41,10 @@ def _angles(height, width):
     return np.degrees(np.arctan(np.hypot(u, v) / LENS))
 
 
-def _fresnel_from_inside(theta):
-    """Unpolarised reflectance of light inside water (n 1.33) meeting the surface at `theta`."""
-    n = 1.33
-    cos_i = np.cos(np.radians(theta))
-    sin_t = n * np.sin(np.radians(theta))
-    cos_t = np.sqrt(np.clip(1.0 - sin_t**2, 0.0, None))
-    rs = ((n * cos_i - cos_t) / (n * cos_i + cos_t)) ** 2
-    rp = ((n * cos_t - cos_i) / (n * cos_t + cos_i)) ** 2
-    return np.where(sin_t >= 1.0, 1.0, (rs + rp) / 2.0)
-
-
 def _slopes(wind):
     """Unit normals (N, 3): Cox and Munk's slopes for `wind` m/s, a fixed draw."""
     rng = np.random.default_rng(7)
-    slope = rng.normal(size=(4000, 2)) * np.sqrt([0.00316 * wind, 0.003 + 0.00192 * wind])
+    slope = rng.normal(size=(4000, 2)) * np.sqrt(cox_munk(wind))
     normals = np.column_stack([-slope[:, 0], -slope[:, 1], np.ones(len(slope))])
     return normals / np.linalg.norm(normals, axis=1, keepdims=True)
 
@@ -65,14 +54,15 @@ def _reflected(angle, wind):
     normals = _slopes(wind)
     table = np.arange(0.0, 70.0, 0.25)
     rays = np.column_stack([np.sin(np.radians(table)), np.zeros_like(table), np.cos(np.radians(table))])
-    incidence = np.degrees(np.arccos(np.clip(rays @ normals.T, -1.0, 1.0)))
-    return np.interp(angle, table, _fresnel_from_inside(incidence).mean(axis=1))
+    # From inside the water up into the air: the index ratio is 1 / n.
+    inside = fresnel(np.clip(rays @ normals.T, -1.0, 1.0), 1.0 / WATER_IOR)
+    return np.interp(angle, table, inside.mean(axis=1))
 
 
 def _model(c, deep, angle):
     f = _reflected(angle, WIND)[..., None]
-    kept = np.exp(-c * DEPTH / np.cos(np.radians(angle))[..., None])
-    return kept * ((1.0 - f) * 1.0 + f * deep) + deep * (1.0 - kept)
+    kept = beer_lambert(c, DEPTH / np.cos(np.radians(angle)))
+    return through_water((1.0 - f) * 1.0 + f * deep, deep, kept)
 
 
 def _below(engine, world=True):

@@ -10,6 +10,7 @@ from the packed bump image's own pixels. Debug View 4 shows `n * 0.5 + 0.5`.
 import bpy
 import numpy as np
 import pytest
+import reference_models
 
 import harness
 
@@ -27,37 +28,11 @@ LAYERS = ((1.0, 1.0), (2.0, 2.0), (4.0, 1.0), (8.0, 0.5))  # (UV scale, scroll s
 
 
 def bump_normal_colour(image, uv, wave_length, layers, wind=WIND, seconds=FRAME / FPS, strength=1.0):
-    """numpy model of Debug View 4 at plane UVs `uv` (..., 2)."""
-    w = np.array(wind, float) / np.hypot(*wind)
-    p = np.array((w[1], -w[0]))
-    base = np.stack((uv @ p, uv @ w), axis=-1) / wave_length
-    scroll = np.array((0.0, seconds * WIND_FORCE / wave_length))
-    total = sum(_bilinear_mirror(image, scale * base + speed * scroll) for scale, speed in LAYERS[:layers])
-    t = 2.0 * total / layers - 1.0
-    x = t[..., 0] * p[0] + t[..., 1] * w[0]
-    y = t[..., 0] * p[1] + t[..., 1] * w[1]
-    n = np.stack((strength * x, strength * y, t[..., 2]), axis=-1)
-    n /= np.linalg.norm(n, axis=-1, keepdims=True)
-    return n * 0.5 + 0.5
-
-
-def _bilinear_mirror(image, uv):
-    """GPU-style bilinear sampling with mirrored-repeat addressing; `image` (H, W, 3), row 0 at v = 0."""
-    height, width = image.shape[:2]
-    x = uv[..., 0] * width - 0.5
-    y = uv[..., 1] * height - 0.5
-    x0, y0 = np.floor(x).astype(np.int64), np.floor(y).astype(np.int64)
-    fx, fy = (x - x0)[..., None], (y - y0)[..., None]
-
-    def mirror(index, size):
-        index = np.mod(index, 2 * size)
-        return np.where(index >= size, 2 * size - 1 - index, index)
-
-    xs = (mirror(x0, width), mirror(x0 + 1, width))
-    ys = (mirror(y0, height), mirror(y0 + 1, height))
-    top = image[ys[0], xs[0]] * (1 - fx) + image[ys[0], xs[1]] * fx
-    bottom = image[ys[1], xs[0]] * (1 - fx) + image[ys[1], xs[1]] * fx
-    return top * (1 - fy) + bottom * fy
+    """numpy model of Debug View 4 at plane UVs `uv` (..., 2), the first `layers` of LAYERS
+    (`reference_models.bump_normal_colour`: bilinear, mirrored repeat)."""
+    return reference_models.bump_normal_colour(
+        image, uv, wave_length, wind, seconds, WIND_FORCE, LAYERS[:layers], strength
+    )
 
 
 @pytest.fixture(scope="module")

@@ -17,6 +17,7 @@ import addon_utils
 import bpy
 import numpy as np
 import pytest
+import reference_models
 
 import harness
 
@@ -213,7 +214,7 @@ def test_the_contrast_falls_with_depth(pool, render):
         bed.location.z = 0.0
         camera.data.lens = lens
     ratio = spread[5.0] / spread[1.0]
-    fade_depth = 8.0  # metres, docs/MODEL.md section 8
+    fade_depth = reference_models.CAUSTICS_FADE_DEPTH
     expected = math.exp(-4.0 / fade_depth)
     print(f"view 8 std: bed 1 m down {spread[1.0]:.3f}, 5 m down {spread[5.0]:.3f}, ratio {ratio:.2f}")
     assert spread[1.0] > 0.2

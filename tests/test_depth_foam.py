@@ -12,6 +12,7 @@ import math
 import bpy
 import numpy as np
 import pytest
+from reference_models import beer_lambert, refracted_cos, through_water
 
 import harness
 
@@ -24,7 +25,6 @@ MAX_DEPTH = 5.0
 WATERLINE_X = -3.0
 ABSORPTION = (0.6, 0.15, 0.08)
 SCATTER = (0.05, 0.3, 0.4)
-IOR = 1.33
 
 
 def _material():
@@ -155,11 +155,10 @@ def _view(lake, render, number, name):
 
 
 def _transmittance(lake):
-    """exp(-Absorption * path) per pixel, with the path of the view ray refracted at IOR 1.33."""
+    """exp(-Absorption * path) per pixel, the path of the view ray refracted into water
+    (`reference_models`: Snell at n 1.333, Beer-Lambert)."""
     cos_i = -lake["directions"][..., 2]  # eye . up
-    cos_t = np.sqrt(1.0 - (1.0 - cos_i**2) / IOR**2)
-    path = _depth(lake["hits"][..., 0]) / cos_t
-    return np.exp(-np.asarray(ABSORPTION) * path[..., None])
+    return beer_lambert(ABSORPTION, _depth(lake["hits"][..., 0]) / refracted_cos(cos_i))
 
 
 def test_transmittance_view_is_beer_lambert_along_the_refracted_ray(lake, render):
@@ -192,7 +191,7 @@ def test_what_is_seen_through_the_water_is_absorbed_and_scattered(lake, render):
     murky = _view(lake, render, 2, "refraction_murky")
     mask = lake["inside"]
     t = _transmittance(lake)
-    model = t * clear + np.asarray(SCATTER) * (1 - t)
+    model = through_water(clear, np.asarray(SCATTER), t)
     error = np.abs(murky - model)[mask]
     assert error.mean() < 0.02, f"mean error {error.mean():.4f}"
     assert np.abs(murky - clear)[mask].mean() > 0.02

@@ -23,6 +23,7 @@ import bpy
 import numpy as np
 import pytest
 from mathutils import Euler, Vector
+from reference_models import plane_fit
 
 import harness
 
@@ -94,8 +95,7 @@ def _footprint_plane(water, hull_matrix, depsgraph):
             slope_along = -world_normal.dot(along) / max(world_normal.z, 1e-6)
             rows.append((u, v, (evaluated.matrix_world @ location).z, slope_along))
     rows = np.array(rows)
-    design = np.column_stack([np.ones(len(rows)), rows[:, 0], rows[:, 1]])
-    (height, along_slope, across_slope), *_ = np.linalg.lstsq(design, rows[:, 2], rcond=None)
+    height, along_slope, across_slope = plane_fit(rows[:, 0], rows[:, 1], rows[:, 2])
     return along_slope, across_slope, height, rows[:, 3]
 
 

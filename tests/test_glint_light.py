@@ -18,6 +18,7 @@ import bpy
 import numpy as np
 import pytest
 from mathutils import Vector
+from reference_models import flat_glint, lake_composition
 
 import harness
 
@@ -143,7 +144,7 @@ def test_the_only_sun_highlight_is_the_glint(lake, render, elevation, azimuth, c
     blend = node.inputs["Dull Blend"].default_value
     dull = np.array(node.inputs["Dull Color"].default_value[:3])
     f = views[3][..., :1]
-    model = (1 - blend) * ((1 - f) * views[1] + f * views[2]) + blend * dull + views[5]
+    model = lake_composition(views[1], views[2], f, blend, dull, views[5])
     mask = _water_mask(lake)
     error = np.abs(views[0] - model)
     assert error[mask].mean() < 0.01, f"mean error {error[mask].mean():.4f}"
@@ -165,11 +166,8 @@ def test_glint_view_is_the_formula_in_the_suns_colour(lake, render):
             node.inputs[name].default_value = value
     origin, directions = harness.pixel_rays(lake["scene"], lake["camera"])
     hits, _ok = harness.hit_plane_z(origin, directions)
-    eye = origin - hits
-    eye /= np.linalg.norm(eye, axis=-1, keepdims=True)
     light = np.array(lake["sun"].matrix_world.col[2][:3]) * -1.0
-    reflected = light * np.array([1.0, 1.0, -1.0])
-    formula = 2.0 * np.maximum((eye * reflected).sum(-1), 0.0) ** 64.0
+    formula = flat_glint(origin - hits, light, 64.0, 2.0)
     mask = _water_mask(lake)
     for channel, weight in enumerate(SUNSET):
         error = np.abs(pixels[..., channel] - weight * formula)[mask]

@@ -9,7 +9,7 @@ numpy's single scattering: along each pixel's ray, up to the surface or without 
     dL = E b p(cos) integral exp(-c s) exp(-c depth(s) / cos_s) ds,
 
 E the sun's strength, b = Light Shafts x the least of c, p Henyey-Greenstein's phase with g 0.85
-(PHASE_G, written here, not read from the add-on) for the angle between the ray and the way to
+(`reference_models.SHAFTS_PHASE_G`, not read from the add-on) for the angle between the ray and the way to
 the sun (the fog is not seen by shadow rays, so the sun's light comes straight, not refracted),
 depth(s) the depth of the point s metres along, cos_s that of the refracted sun. 96 x 72: Cycles
 32 samples, the water at the origin; EEVEE 8 samples, the water raised 1.5 m and turned 30 degrees
@@ -21,6 +21,7 @@ import math
 import bpy
 import numpy as np
 import pytest
+from reference_models import SHAFTS_PHASE_G, refracted_cos, to_sun
 
 import harness
 
@@ -28,17 +29,10 @@ SUN_ELEVATION, SUN_AZIMUTH = 55.0, 40.0
 SUN_STRENGTH = 3.0
 DEPTH = 2.0
 PITCH = 40.0  # degrees over the horizon the camera looks, towards the sun's azimuth
-IOR = 1.333
-# Henyey-Greenstein's g of the shafts' phase, as docs/BENCHMARKS.md ("Light shafts") gives it: sea
-# water scatters forward (fits to Petzold's measured volume scattering functions give g of about
-# 0.85-0.95; 0.92 for the average particle phase function drawn from them, Mobley 1994).
-PHASE_G = 0.85
 
 
 def _to_sun():
-    e, a = math.radians(SUN_ELEVATION), math.radians(SUN_AZIMUTH)
-    s = math.cos(e)
-    return np.array([s * math.sin(a), -s * math.cos(a), math.sin(e)])
+    return to_sun(SUN_ELEVATION, SUN_AZIMUTH)
 
 
 def _build(engine, level=0.0, turn=0.0):
@@ -85,7 +79,7 @@ def shafts(request, addon, tmp_path_factory):
 
 def _model(scene, camera, added):
     """numpy's in-scattered sunlight per pixel (H, W, 3)."""
-    g = PHASE_G
+    g = SHAFTS_PHASE_G
     c = np.array(added.material.node_tree.nodes["Water Surface"].inputs["Absorption"].default_value[:3])
     b = c.min()
     _origin, directions = harness.pixel_rays(scene, camera)
@@ -93,8 +87,7 @@ def _model(scene, camera, added):
     to_sun = _to_sun()
     cos = v @ to_sun
     phase = (1.0 - g * g) / (4.0 * math.pi * (1.0 + g * g - 2.0 * g * cos) ** 1.5)
-    sin_t = math.cos(math.radians(SUN_ELEVATION)) / IOR
-    cos_s = math.sqrt(1.0 - sin_t * sin_t)
+    cos_s = refracted_cos(math.sin(math.radians(SUN_ELEVATION)))  # the sun refracted into the water
     vz = v[..., 2:3]
     a = c * (1.0 - vz / cos_s)  # how fast exp(-c s) exp(-c depth(s) / cos_s) falls along the ray
     reach = np.where(vz > 1e-6, DEPTH / np.maximum(vz, 1e-6), np.inf)

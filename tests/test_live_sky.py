@@ -14,6 +14,7 @@ in each pixel's mirrored direction (Blender's equirectangular mapping), with the
 import bpy
 import numpy as np
 import pytest
+from reference_models import equirect_uv, seeds_ocean_fresnel
 
 import harness
 
@@ -167,12 +168,11 @@ def test_a_swapped_image_is_reflected_as_numpy_looks_it_up(addon, eevee, render,
     hits, on_sea = harness.hit_plane_z(origin, d)
     on_sea &= (np.abs(hits[..., :2]) < 190.0).all(axis=-1)
     r = d * np.array((1.0, 1.0, -1.0))  # mirrored by the flat sea
-    u = 0.5 - np.arctan2(r[..., 1], r[..., 0]) / (2 * np.pi)
-    v = 0.5 + np.arctan2(r[..., 2], np.hypot(r[..., 0], r[..., 1])) / np.pi
+    u, v = equirect_uv(r)
     sky = _sky_pixels((0.2, 0.9, 0.3))
     rows = np.clip((v * IMAGE_SIZE[1]).astype(int), 0, IMAGE_SIZE[1] - 1)
     columns = np.mod((u * IMAGE_SIZE[0]).astype(int), IMAGE_SIZE[0])
-    f = (-d[..., 2] / 2 + 0.5)[..., None]
+    f = seeds_ocean_fresnel(-d)[..., None]
     want = DEEP * f + sky[rows, columns] * (1 - f)
     warm = DEEP * f + _sky_pixels((1.0, 0.6, 0.25))[rows, columns] * (1 - f)
     error = np.abs(pixels - want)[on_sea]

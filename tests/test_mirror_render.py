@@ -11,6 +11,7 @@ import bpy
 import numpy as np
 import pytest
 from mathutils import Vector
+from reference_models import flat_glint, lake_fresnel
 
 import harness
 
@@ -81,8 +82,7 @@ def _is(color, expected, tolerance=0.25):
 
 def _still_water(camera, point, reflected, refracted=SKY):
     """The model on still water at `point`: (1 - F) * reflected + F * refracted, F = dot(eye, up)."""
-    eye = Vector(camera.matrix_world.translation) - Vector(point)
-    f = eye.normalized().z
+    f = lake_fresnel(np.array(camera.matrix_world.translation) - np.asarray(point, float))
     return (1 - f) * np.asarray(reflected) + f * np.asarray(refracted)
 
 
@@ -158,7 +158,7 @@ def test_sky_share_is_higher_at_a_grazing_view_than_a_steep_one(pond, shown, ren
         on_water[-8:] = False
         assert on_water.sum() > 500
         # The reference: share = 1 - F, F = dot(eye, up) for a still mirror.
-        expected = 1.0 + rays[..., 2]
+        expected = 1.0 - lake_fresnel(-rays)
         share = _sky_share(pixels)
         shares[name] = share[on_water].mean()
         assert np.abs(share[on_water] - expected[on_water]).mean() < 0.05, name
@@ -172,10 +172,8 @@ def _aim(sun, direction):
 
 def _predicted_glint(scene, camera, light):
     """Pixel where the sun's mirror reflection reaches the camera on still water."""
-    origin, rays = harness.pixel_rays(scene, camera)
-    light = np.asarray(light) / np.linalg.norm(light)
-    reflected = light * np.array([1, 1, -1])
-    score = (-rays * reflected).sum(axis=-1)  # eye = -ray
+    _origin, rays = harness.pixel_rays(scene, camera)
+    score = flat_glint(-rays, light, 1.0)  # the glint's peak, whatever its power
     row, col = np.unravel_index(np.argmax(score), score.shape)
     return col, row
 

@@ -14,6 +14,7 @@ reflected direction, where `mean(sky) ** 30` is a glint of 1.5 to 5.
 import bpy
 import numpy as np
 import pytest
+from reference_models import bilinear, equirect_uv, seeds_ocean_fresnel
 
 import harness
 
@@ -58,7 +59,7 @@ def _surface(scene, camera):
 def _predicted(scene, camera):
     """The model's colour per pixel, and the mask of pixels that see the ocean."""
     flat, hits, n, t = _surface(scene, camera)
-    f = (-flat * n).sum(axis=1) / 2 + 0.5
+    f = seeds_ocean_fresnel(-flat, n)
     color = DEEP * f[:, None] + SKY * (1 - f[:, None]) + SKY.mean() ** 30
     inside = (np.abs(hits[:, :2]) < 38).all(axis=1) & (t > 0)
     shape = scene.render.resolution_y, scene.render.resolution_x
@@ -148,26 +149,6 @@ def _bright_sky_world(scene):
     return pixels[..., :3].astype(np.float64)
 
 
-def _bilinear(image, uv, clamp_v=False):
-    """GPU-style bilinear sampling at mip level 0, repeating (or clamped in v).
-
-    `image` is (H, W, 3) with row 0 at v = 0, as `Image.pixels` holds it.
-    """
-    height, width = image.shape[:2]
-    x = uv[..., 0] * width - 0.5
-    y = uv[..., 1] * height - 0.5
-    x0, y0 = np.floor(x).astype(np.int64), np.floor(y).astype(np.int64)
-    fx, fy = (x - x0)[..., None], (y - y0)[..., None]
-    xs = np.mod(x0, width), np.mod(x0 + 1, width)
-    if clamp_v:
-        ys = np.clip(y0, 0, height - 1), np.clip(y0 + 1, 0, height - 1)
-    else:
-        ys = np.mod(y0, height), np.mod(y0 + 1, height)
-    bottom = image[ys[0], xs[0]] * (1 - fx) + image[ys[0], xs[1]] * fx
-    top = image[ys[1], xs[0]] * (1 - fx) + image[ys[1], xs[1]] * fx
-    return bottom * (1 - fy) + top * fy
-
-
 def _unit(v):
     return v / np.linalg.norm(v, axis=-1, keepdims=True)
 
@@ -187,7 +168,7 @@ def _bumped_ocean(surface, seconds, bump, sky, strength=BUMP_STRENGTH, taps=(1, 
         2: 1.8 * TEX_STRETCH * (uv[:, ::-1] if swap else uv),
         3: 3.1 * TEX_STRETCH * uv,
     }
-    tangent = sum(_bilinear(bump, tap_uv[k]) - 0.5 for k in taps)
+    tangent = sum(bilinear(bump, tap_uv[k]) - 0.5 for k in taps)  # repeating, mip level 0
     tangent[:, :2] *= strength
     tangent = _unit(tangent)
     # The wave's tangent frame: B along +X, T = N x B.
@@ -195,11 +176,9 @@ def _bumped_ocean(surface, seconds, bump, sky, strength=BUMP_STRENGTH, taps=(1, 
     t = np.cross(wave_normal, b)
     n = _unit(tangent[:, :1] * b + tangent[:, 1:2] * t + tangent[:, 2:3] * wave_normal)
     reflected = _unit(eye - 2 * (eye * n).sum(axis=1, keepdims=True) * n)
-    # Blender's equirectangular lookup of a direction.
-    u = 0.5 - np.arctan2(reflected[:, 1], reflected[:, 0]) / (2 * np.pi)
-    v = 0.5 + np.arctan2(reflected[:, 2], np.hypot(reflected[:, 0], reflected[:, 1])) / np.pi
-    seen = _bilinear(sky, np.stack((u, v), axis=-1), clamp_v=True)
-    f = (-eye * n).sum(axis=1, keepdims=True) / 2 + 0.5
+    # Blender's equirectangular lookup of a direction, clamped at the poles.
+    seen = bilinear(sky, np.stack(equirect_uv(reflected), axis=-1), wrap_v="clamp")
+    f = seeds_ocean_fresnel(-eye, n)[:, None]
     glint = seen.mean(axis=1) ** 30
     return DEEP * f + seen * (1 - f) + glint[:, None], glint
 

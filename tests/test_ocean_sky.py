@@ -9,6 +9,7 @@ world was one flat colour and the whole sea one tone.
 import bpy
 import numpy as np
 import pytest
+from reference_models import flat_glint, seeds_ocean_fresnel
 
 import harness
 
@@ -84,7 +85,7 @@ def _expected(scene, camera):
     """numpy: deep F + sky(reflect(d)) (1 - F), F = dot(-d, n) / 2 + 0.5, on the flat sea."""
     origin, directions = harness.pixel_rays(scene, camera)
     ok = _on_sea(origin, directions)
-    f = (-directions[..., 2] / 2 + 0.5)[..., None]
+    f = seeds_ocean_fresnel(-directions)[..., None]
     reflected_z = np.clip(-directions[..., 2], 0.0, 1.0)[..., None]
     sky = HORIZON + (ZENITH - HORIZON) * reflected_z
     return DEEP * f + sky * (1 - f), ok
@@ -156,11 +157,10 @@ def test_the_ocean_debug_views_show_f_the_normal_and_the_sun_glint(addon, eevee,
     origin, d = harness.pixel_rays(scene, camera)
     on_sea = _on_sea(origin, d)
     light = np.array(sun.matrix_world.to_3x3().col[2]) * -1.0  # the way sunlight travels
-    reflected = light * np.array((1.0, 1.0, -1.0))  # off the flat sea, n = +Z
     expected = {
-        3: np.repeat((-d[..., 2] / 2 + 0.5)[..., None], 3, axis=-1),
+        3: np.repeat(seeds_ocean_fresnel(-d)[..., None], 3, axis=-1),
         4: np.broadcast_to((0.5, 0.5, 1.0), d.shape),
-        5: np.repeat((np.maximum((reflected * -d).sum(axis=-1), 0.0) ** 8.0)[..., None], 3, axis=-1),
+        5: np.repeat(flat_glint(-d, light, 8.0)[..., None], 3, axis=-1),  # off the flat sea, n = +Z
         6: np.zeros(d.shape),  # no surroundings: no bed seen through
         7: np.zeros(d.shape),
         8: np.ones(d.shape),  # the caustic factor: 1, nothing changed

@@ -10,6 +10,7 @@ import bpy
 import numpy as np
 import pytest
 from mathutils import Vector
+from reference_models import plane_fit, pm_significant_height
 
 import harness
 
@@ -70,7 +71,7 @@ def test_the_open_sea_moves_with_the_clock_and_its_waves_and_foam_grow_with_the_
             inner = np.hypot(rest[:, 0], rest[:, 1]) < 0.25 * tile
             variances.append(position[inner, 2].var())
             caps.append(_point_values(sea, "water_whitecaps")[inner])
-        spread[wind] = math.sqrt(np.mean(variances)) / (0.21 * wind**2 / (4 * 9.81))
+        spread[wind] = math.sqrt(np.mean(variances)) / (pm_significant_height(wind) / 4)
         whitecaps[wind] = np.concatenate(caps)
         print(
             f"{wind:g} m/s: height spread {spread[wind]:.2f} of a grown sea's; "
@@ -309,9 +310,9 @@ def test_a_floating_cube_rides_the_surface_at_three_frames(scene, preset):
             for dy in footprint
         ]
         normals = [row[3] for row in below]
-        design = np.array([(1.0, row[0], row[1]) for row in below])
-        fitted, *_ = np.linalg.lstsq(design, np.array([row[2] for row in below]), rcond=None)
-        height = fitted[0] - 1.0 / 3.0 + 0.5  # the plane at the origin, a third under, its middle
+        u, v, z = (np.array([row[i] for row in below]) for i in range(3))
+        # The plane fitted over the footprint, at the origin, a third under: the cube's middle.
+        height = plane_fit(u, v, z)[0] - 1.0 / 3.0 + 0.5
         mean_normal = sum(normals, Vector()).normalized()
         up = (matrix.to_3x3() @ Vector((0.0, 0.0, 1.0))).normalized()
         angle = math.degrees(up.angle(mean_normal))

@@ -6,33 +6,24 @@ gives back their mean reflectance: test_sea_band.py.)
 
 A calm open sea (3 m/s, no whitecaps) under a plain sky S, seen from 3 m up over a wide view from
 steep to grazing. Each pixel's ray meets the sea at an angle θ to the vertical; numpy's colour
-there is `R(θ) S + (1 - R(θ)) D` (R: Fresnel's reflectance of unpolarised light at n = 1.33, D the
-shade's Deep Color: what the unlit ocean shading draws). Binned by θ, the rendered brightness is
-numpy's within 20% (the waves' slopes, 0.13 rad rms at 3 m/s, tilt each pixel's own angle;
-measured: within 4% in EEVEE, 8% in Cycles, from 15° to 85°). The seeds' formula, which the open
-sea had before, is 30% over it 45° from straight down.
+there is `R(θ) S + (1 - R(θ)) D` (R: Fresnel's reflectance of unpolarised light for water's
+n = 1.333, `reference_models.fresnel`; D the shade's Deep Color: what the unlit ocean shading
+draws). Binned by θ, the rendered brightness is numpy's within 20% (the waves' slopes, 0.13 rad
+rms at 3 m/s, tilt each pixel's own angle; measured: within 4% in EEVEE, 8% in Cycles, from 15° to
+85°). The seeds' formula, which the open sea had before, is 30% over it 45° from straight down.
 """
 
 import math
 
 import numpy as np
 import pytest
+from reference_models import fresnel, seeds_ocean_fresnel
 
 import harness
 
 pytestmark = pytest.mark.render
 
 SKY = (0.55, 0.7, 0.95)
-
-
-def reflectance(cos_i, n=1.33):
-    """Fresnel's reflectance of unpolarised light from air onto water, numpy."""
-    cos_i = np.clip(cos_i, 1e-6, 1.0)
-    sin_t = np.sqrt(1.0 - cos_i**2) / n
-    cos_t = np.sqrt(np.clip(1.0 - sin_t**2, 0.0, 1.0))
-    rs = ((cos_i - n * cos_t) / (cos_i + n * cos_t)) ** 2
-    rp = ((n * cos_i - cos_t) / (n * cos_i + cos_t)) ** 2
-    return (rs + rp) / 2.0
 
 
 def _render_calm_sea(engine, render, preset):
@@ -58,7 +49,7 @@ def test_the_open_sea_is_dark_looking_down_and_bright_at_grazing_as_fresnel_says
     pixels, directions, deep = _render_calm_sea(engine, render, "open_sea")
     cos_i = -directions[..., 2]
     sea = cos_i > 0.05  # below the horizon
-    model = reflectance(cos_i)[..., None] * np.array(SKY) + (1.0 - reflectance(cos_i))[..., None] * deep
+    model = fresnel(cos_i)[..., None] * np.array(SKY) + (1.0 - fresnel(cos_i))[..., None] * deep
     angle = np.degrees(np.arccos(np.clip(cos_i, -1.0, 1.0)))
     rows = []
     for low in range(15, 85, 5):
@@ -85,9 +76,9 @@ def test_the_seeds_ocean_keeps_the_seeds_fresnel(addon, eevee, render):
     and more than 15% off water's."""
     pixels, directions, deep = _render_calm_sea(eevee, render, "ocean")
     cos_i = -directions[..., 2]
-    sky_share = ((1.0 - cos_i) / 2.0)[..., None]
+    sky_share = (1.0 - seeds_ocean_fresnel(-directions))[..., None]
     seeds = sky_share * np.array(SKY) + (1.0 - sky_share) * deep
-    water = reflectance(cos_i)[..., None] * np.array(SKY) + (1.0 - reflectance(cos_i))[..., None] * deep
+    water = fresnel(cos_i)[..., None] * np.array(SKY) + (1.0 - fresnel(cos_i))[..., None] * deep
     middle = (cos_i > math.cos(math.radians(60.0))) & (cos_i < math.cos(math.radians(35.0)))
     seen, want, not_want = pixels[middle].mean(), seeds[middle].mean(), water[middle].mean()
     print(

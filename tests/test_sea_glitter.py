@@ -20,6 +20,7 @@ import bpy
 import numpy as np
 import pytest
 from mathutils import Vector
+from reference_models import cox_munk
 
 import harness
 
@@ -68,7 +69,7 @@ def _predicted(eye, sun):
     along = np.array(WIND) / np.hypot(*WIND)
     up = slope_x * along[0] + slope_y * along[1]
     cross = -slope_x * along[1] + slope_y * along[0]
-    upwind, crosswind = 3.16e-3 * WIND_SPEED, 0.003 + 1.92e-3 * WIND_SPEED
+    upwind, crosswind = cox_munk(WIND_SPEED)
     return np.exp(-(up**2) / (2 * upwind) - cross**2 / (2 * crosswind)) / half[..., 2] ** 3
 
 

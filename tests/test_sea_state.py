@@ -13,11 +13,11 @@ import math
 import bpy
 import numpy as np
 import pytest
+from reference_models import deep_water_wavelength, pm_peak_period, pm_significant_height
 from test_repair import draw_panel
 
 import harness
 
-G = 9.81
 WIND = (0.8, 0.6)
 SWELL = (-0.28, 0.96)  # 53 degrees from the wind
 
@@ -93,8 +93,8 @@ def test_a_grown_sea_s_significant_height_and_peak_period(scene, wind):
     travel downwind (the plane wave most like them within 45 degrees of the wind)."""
     sea = _open_sea(scene, resolution=33, sea_wind_speed=wind)
     inner = _inner(sea)
-    target_period = 2 * math.pi * wind / (0.877 * G)
-    target_height = 0.21 * wind**2 / G
+    target_period = pm_peak_period(wind)
+    target_height = pm_significant_height(wind)
     step = target_period / 6
     heights = _record(scene, sea, step, 180, inner)
     height = 4 * heights.std()
@@ -103,7 +103,7 @@ def test_a_grown_sea_s_significant_height_and_peak_period(scene, wind):
     highest = 1.0 / frequency[np.argmax(np.convolve(power, np.ones(3) / 3, mode="same"))]
     mean_period = (power / frequency).sum() / power.sum()
     xy = _points(sea)[0][inner]
-    peak_length = G * target_period**2 / (2 * math.pi)
+    peak_length = deep_water_wavelength(target_period)
     times = np.arange(len(heights)) * step
     _length, travels = _local_plane_wave(xy, heights, times, period, peak_length)
     off = math.degrees(math.acos(np.clip(travels @ (np.array(WIND) / np.hypot(*WIND)), -1.0, 1.0)))
@@ -205,7 +205,7 @@ def test_a_swell_s_wavelength_direction_and_height_on_top_of_the_wind_sea(scene)
     heights = _record(scene, sea, step, steps, inner)
     ocean.show_viewport = True
     xy = _points(sea)[0][inner]
-    expected = G * period**2 / (2 * math.pi)
+    expected = deep_water_wavelength(period)
     local, travels = _local_plane_wave(xy, heights, np.arange(steps) * step, period, expected)
     unit = np.array(SWELL) / np.hypot(*SWELL)
     off = math.degrees(math.acos(np.clip(travels @ unit, -1.0, 1.0)))

@@ -3,9 +3,9 @@
 A camera 3 m under the water looks straight up through a 12 mm lens (113° across), under a
 bright, even sky, above a dark floor 12 m down. The brightness is averaged in rings of 1° about
 the view's centre (the angle from straight up). The window's edge is where the rings' brightness
-crosses halfway between inside (under 30°) and outside (58° to 62°): asin(1 / 1.33) = 48.75°
-(the issue's 48.6° ± 2°, for 1.333). Without the work the lake's underside was a mirror (no
-window) and the ocean's clear (the sky everywhere).
+crosses halfway between inside (under 30°) and outside (58° to 62°): asin(1 / 1.333) = 48.6°
+(the issue's 48.6° ± 2°; the add-on's index, SPEC's 1.33, puts it at 48.75°). Without the work
+the lake's underside was a mirror (no window) and the ocean's clear (the sky everywhere).
 
 Checked: the lake, the seeds' ocean and the open sea in Cycles, the lake in EEVEE (which shows
 outside the window what its planar mirror probe holds). The ocean shadings show the deep water's
@@ -20,6 +20,7 @@ import math
 
 import numpy as np
 import pytest
+from reference_models import critical_angle
 
 import harness
 
@@ -27,7 +28,7 @@ pytestmark = pytest.mark.render
 
 LENS = 12.0
 SENSOR_HALF = 18.0  # mm: the default 36 mm sensor, fitted horizontally
-CRITICAL = math.degrees(math.asin(1.0 / 1.33))
+CRITICAL = critical_angle()  # asin(1 / 1.333) = 48.61 degrees
 
 
 def _from_below(engine, preset, render, samples):
@@ -116,7 +117,7 @@ def test_snells_window_seen_at_an_angle_and_through_waves_is_where_each_ray_refr
     """The camera 3 m down looks up 30° from straight up (the window off the view's centre), under
     the lake flat and with its four sine waves (0.25 m cells). numpy casts each pixel's ray at
     the evaluated surface and takes its angle to the face it meets: binned by that angle, the
-    share of pixels showing the sky falls through a half at asin(1 / 1.33), and the pixels well
+    share of pixels showing the sky falls through a half at asin(1 / 1.333), and the pixels well
     clear of it (4° either side: the shader's own ripples tilt the normal a little more; under 75°)
     show
     the sky or the water below as their ray says, one by one. Through waves the window breaks

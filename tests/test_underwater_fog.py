@@ -17,6 +17,7 @@ mesh is empty), and the render is the same as with the body hidden.
 import bpy
 import numpy as np
 import pytest
+from reference_models import JERLOV_KD, beer_lambert, through_water
 
 import harness
 
@@ -25,12 +26,6 @@ pytestmark = pytest.mark.render
 DISTANCES = (2.0, 3.0, 5.0, 10.0)
 SIDEWAYS = (-0.55, 0.5, -0.2, 0.22)  # each target's offset across the view, per metre away
 DEPTH = 2.0
-# Jerlov's water types: diffuse attenuation Kd per metre at 650, 550 and 475 nm (red, green, blue).
-JERLOV = {
-    "jerlov_ocean_i": (0.36, 0.063, 0.018),
-    "jerlov_coastal_3": (0.46, 0.19, 0.29),
-    "jerlov_coastal_9": (0.76, 0.63, 1.23),
-}
 
 
 def _targets(scene):
@@ -73,7 +68,7 @@ def views(addon, eevee):
     for preset in ("clear_lake", "murky_pond", "ocean", "open_sea"):
         for engine in (eevee, "CYCLES"):
             found[preset, engine] = _view(engine, preset)
-    for preset in JERLOV:
+    for preset in JERLOV_KD:  # Jerlov's water types: Kd per metre at 650, 550 and 475 nm
         found[preset, "CYCLES"] = _view("CYCLES", preset)
     return found
 
@@ -90,14 +85,12 @@ def test_targets_under_the_water_fade_into_it_as_beer_lambert_says(views, eevee,
     pixels, places, c, far = views[preset, engine]
     assert c.max() > 0.0, "the water absorbs"
     for d, place in zip(DISTANCES, places):
-        kept = np.exp(-c * d)
-        model = kept + far * (1.0 - kept)
+        model = through_water(1.0, far, beer_lambert(c, d))
         seen = _at(pixels, place)
         print(f"{preset} {engine} {d:g} m: rendered {np.round(seen, 4)}, numpy {np.round(model, 4)}")
         np.save(bpy.app.tempdir + f"fog_{preset}_{engine}.npy", pixels)
     for d, place in zip(DISTANCES, places):
-        kept = np.exp(-c * d)
-        model = kept + far * (1.0 - kept)
+        model = through_water(1.0, far, beer_lambert(c, d))
         seen = _at(pixels, place)
         assert np.all(np.abs(seen - model) <= 0.2 * model + 0.005), f"{d:g} m: {seen} against {model}"
 
@@ -164,16 +157,14 @@ def test_a_camera_above_the_water_pays_for_none_of_it(addon, eevee, render, pres
     assert len(body.evaluated_get(depsgraph).data.vertices) > 0, "a body once the camera is under"
 
 
-@pytest.mark.parametrize("preset", list(JERLOV))
+@pytest.mark.parametrize("preset", list(JERLOV_KD))
 def test_jerlov_presets_turn_far_things_blue_in_the_ocean_and_green_on_the_coast(views, preset):
     """The presets carry Jerlov's published Kd, and a white target 10 m away takes the colour the
     water lets through furthest: blue in ocean water of type I, green in coastal water."""
     pixels, places, c, far = views[preset, "CYCLES"]
-    assert np.allclose(c, JERLOV[preset], atol=1e-6)
+    assert np.allclose(c, JERLOV_KD[preset], atol=1e-6)
     far_target = _at(pixels, places[3])
-    kept = np.exp(-c * DISTANCES[3])
-    assert np.all(
-        np.abs(far_target - (kept + far * (1.0 - kept))) <= 0.2 * (kept + far * (1.0 - kept)) + 0.005
-    )
+    model = through_water(1.0, far, beer_lambert(c, DISTANCES[3]))
+    assert np.all(np.abs(far_target - model) <= 0.2 * model + 0.005)
     print(f"{preset}: a white target 10 m away is {np.round(far_target, 3)}")
     assert np.argmax(far_target) == (2 if preset == "jerlov_ocean_i" else 1)

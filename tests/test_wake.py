@@ -33,10 +33,15 @@ import bpy
 import kelvin_model
 import numpy as np
 import pytest
+from reference_models import (
+    G,
+    capillary_gravity_group_speed,
+    kriebel_seelig,
+    wavelength_at_speed,
+)
 
 import harness
 
-G = 9.81
 SPEED = 3.5
 HEADING = 0.6
 START = np.array([-22.0, -14.0])
@@ -193,7 +198,7 @@ def test_the_transverse_waves_are_2_pi_u2_over_g_long(lake_wake):
     xs, zs = x[line][order], lake_wake["points"][line, 2][order]
     crossings = xs[1:][np.sign(zs[1:]) != np.sign(zs[:-1])]
     measured = 2.0 * np.diff(crossings).mean()
-    expected = 2.0 * math.pi * SPEED**2 / G
+    expected = wavelength_at_speed(SPEED)
     print(
         "transverse wavelength",
         round(measured, 2),
@@ -232,16 +237,6 @@ def test_the_lakes_shading_shows_the_wakes_foam(lake_wake, render):
     assert foam > water + 0.25
 
 
-def _kriebel_seelig(length, speed, draft, depth, across, block=0.6, beta=1.0):
-    """Kriebel and Seelig (2005): the highest wave, crest to trough, `across` metres from the
-    track of a hull `length` long at `speed` drawing `draft` in `depth` of water:
-    `g H / U² = β (F* - 0.1)² (y / L)^(-1/3)`, `F* = F exp(α T / d)`, `α = 2.35 (1 - Cb)`,
-    held where their data end (F* and F at 0.5)."""
-    froude = speed / math.sqrt(G * length)
-    raised = min(froude * math.exp(2.35 * (1.0 - block) * draft / depth), 0.5)
-    return beta * (raised - 0.1) ** 2 * min(froude, 0.5) ** 2 * length * (across / length) ** (-1.0 / 3.0)
-
-
 def _highest_across(x, y, height, length, lines):
     """Crest to trough along lines `lines` hull lengths across (both sides, each 0.1 L wide):
     the largest swing behind the hull, as a gauge there records the passing wake, brought to
@@ -271,14 +266,14 @@ def test_heights_follow_kriebel_and_seelig_over_speed_draft_and_distance(addon):
             length, speed, seconds, end=run, size=52.0, fade=600.0, inputs={"Draft": draft, "Depth": depth}
         )
         ours[froude, draft] = _highest_across(x, y, height, length, lines)
-        theirs[froude, draft] = _kriebel_seelig(length, speed, draft, depth, length)
+        theirs[froude, draft] = kriebel_seelig(froude, length, draft, depth)
         print(
             f"Fr {froude} draft {draft}: at L {ours[froude, draft]:.4f} m,",
             f"theirs {theirs[froude, draft]:.4f}",
         )
         assert ours[froude, draft] == pytest.approx(theirs[froude, draft], rel=0.2)
     far = _highest_across(x, y, height, length, 2.0 * lines) * 2.0 ** (-1.0 / 3.0)
-    their_far = _kriebel_seelig(length, speed, draft, depth, 2.0 * length)
+    their_far = kriebel_seelig(froude, length, draft, depth, across=2.0 * length)
     print(f"Fr 0.4 at 2 L: {far:.4f} m, theirs {their_far:.4f}")
     assert far == pytest.approx(their_far, rel=0.25)
     for a, b in (((0.3, 1.0), (0.3, 0.5)), ((0.4, 0.5), (0.3, 0.5))):
@@ -419,7 +414,7 @@ def test_the_cusp_waves_fall_as_r_to_minus_a_third_and_the_transverse_as_minus_a
     `r^(-1/3)` (Airy's), those on the track as `r^(-1/2)`, each within 0.1 of the exponent."""
     length, speed = 6.0, 4.0
     x, y, height, _fade = _straight_wake(length, speed, 10.0, fade=600.0)
-    wavelength = 2.0 * math.pi * speed**2 / G
+    wavelength = wavelength_at_speed(speed)
     angle = np.degrees(np.arctan2(np.abs(y), x))
     starts = np.arange(8.0, 33.0 - wavelength, wavelength / 2.0)
     middles, axis, arms = [], [], []
@@ -848,9 +843,7 @@ def test_a_stone_dropped_in_makes_a_ring_that_spreads_at_the_group_speed(
         radii.append((bins[int(np.argmax(rms))] + width / 2.0, (frame - entered) / FPS))
     (r1, t1), (r2, t2) = radii
     k = 2.0 * math.pi / wavelength
-    sigma = 7.3e-5
-    omega = math.sqrt(G * k + sigma * k**3)
-    group = (G + 3.0 * sigma * k**2) / (2.0 * omega)
+    group = capillary_gravity_group_speed(k)
     speed = (r2 - r1) / (t2 - t1)
     print("ring radii", radii, "speed", round(speed, 3), "group speed", round(group, 3))
     assert abs(speed - group) < 0.2 * group

@@ -30,10 +30,9 @@ import bpy
 import numpy as np
 import pytest
 import wake_heights
+from reference_models import G, capillary_gravity_omega, kriebel_seelig
 
 import harness
-
-G = 9.81
 
 
 def _modifier_tree(name, group):
@@ -131,12 +130,6 @@ def test_the_kelvin_group_is_the_stationary_phase_sum_over_the_whole_patch(kelvi
             assert kept[0] < ratio < kept[1]
 
 
-def _kriebel_seelig(froude, length, draft, depth, beta=1.0, block=0.6):
-    """Their highest wave a hull length across, crest to trough (see `test_wake.py`)."""
-    raised = min(froude * math.exp(2.35 * (1.0 - block) * draft / depth), 0.5)
-    return beta * (raised - 0.1) ** 2 * min(froude, 0.5) ** 2 * length
-
-
 def test_the_height_group_times_the_patterns_height_is_kriebel_and_seeligs(addon):
     harness.clean_scene(width=8, height=8, samples=1)
     wake = harness.addon("nodes.wake")
@@ -151,18 +144,19 @@ def test_the_height_group_times_the_patterns_height_is_kriebel_and_seeligs(addon
     worst = 0.0
     for (fr2, draft), scale in zip(points, ours, strict=True):
         froude = math.sqrt(fr2)
-        theirs = _kriebel_seelig(froude, length, draft, depth)
+        theirs = kriebel_seelig(froude, length, draft, depth)
         made = scale * wake_heights.crest_to_trough(froude)  # the pattern is in hull lengths
         worst = max(worst, abs(made / theirs - 1.0))
         assert made == pytest.approx(theirs, rel=0.06), (froude, draft)
     print("height group: worst", round(worst, 4), "off Kriebel and Seelig's")
 
 
-def _ring_model(r, t, beam, strength=1.0, g=9.81, tension=0.0728 / 998.0):
-    """The ring from the dispersion relation, the group speed by differentiating it."""
+def _ring_model(r, t, beam, strength=1.0):
+    """The ring from the dispersion relation (`reference_models.capillary_gravity_omega`), the
+    group speed by differentiating it numerically (not its analytic derivative)."""
     wavelength = 2.0 * beam
     k = 2.0 * math.pi / wavelength
-    omega = lambda k: np.sqrt(g * k + tension * k**3)  # noqa: E731
+    omega = capillary_gravity_omega
     group_speed = float((omega(k * 1.0001) - omega(k * 0.9999)) / (k * 0.0002))
     front = group_speed * t
     envelope = np.exp(-(((r - front) / wavelength) ** 2))
@@ -177,7 +171,7 @@ def test_the_ring_group_runs_out_at_the_group_speed_spreading_and_fading(addon):
     beam = 0.4
     r, t = np.meshgrid(np.linspace(0.0, 8.0, 321), np.linspace(0.0, 5.0, 101))
     points = np.stack([r.ravel(), t.ravel()], axis=1)
-    constants = {"Beam": beam, "G": 9.81, "Strength": 1.5}
+    constants = {"Beam": beam, "G": G, "Strength": 1.5}
     ours = _evaluate(group, points, constants, ("R", "Age"), absolute=False)
     theirs = _ring_model(points[:, 0], points[:, 1], beam, 1.5)
     error = np.abs(ours - theirs).max() / np.abs(theirs).max()

@@ -12,6 +12,7 @@ import bpy
 import numpy as np
 import pytest
 from mathutils import Vector
+from reference_models import bump_normal_colour, flat_glint, lake_composition, lake_fresnel
 
 import harness
 
@@ -137,21 +138,12 @@ def test_fresnel_view_matches_dot_eye_up(water, render):
     assert mask.sum() > 1000
     water["node"].inputs["Debug View"].default_value = 3
     pixels = render(water["scene"], "fresnel", exr=True)
-    eye = origin - hits
-    expected = np.clip(eye[..., 2] / np.linalg.norm(eye, axis=-1), 0, 1)
+    expected = lake_fresnel(origin - hits)
     error = np.abs(pixels[..., 0] - expected)[mask]
     assert error.mean() < 0.02, f"mean error {error.mean():.4f}"
     # Grey: F in every channel; and it spans a real range over this view.
     assert np.allclose(pixels[..., 0][mask], pixels[..., 2][mask], atol=2e-3)
     assert expected[mask].max() - expected[mask].min() > 0.2
-
-
-def _glint_model(origin, hits, sun_dir, power, strength=1.0):
-    eye = origin - hits
-    eye /= np.linalg.norm(eye, axis=-1, keepdims=True)
-    light = np.asarray(sun_dir, float) / np.linalg.norm(sun_dir)
-    reflected = light * np.array([1.0, 1.0, -1.0])  # reflect(L, up)
-    return strength * np.maximum((eye * reflected).sum(-1), 0.0) ** power
 
 
 def test_glint_view_matches_the_formula_and_follows_the_sun(water, render):
@@ -167,7 +159,7 @@ def test_glint_view_matches_the_formula_and_follows_the_sun(water, render):
         sun_dir = (eye.x, eye.y, -eye.z)
         _aim_sun(water["sun"], Vector(sun_dir).normalized())
         pixels = render(water["scene"], f"glint_{len(peaks)}", exr=True)
-        expected = _glint_model(origin, hits, sun_dir, 64.0, 2.0)
+        expected = flat_glint(origin - hits, sun_dir, 64.0, 2.0)
         error = np.abs(pixels[..., 0] - expected)[mask]
         assert error.mean() < 0.02, f"mean error {error.mean():.4f}"
         assert expected[mask].max() > 1.5  # the glint is in view, so the comparison means something
@@ -191,7 +183,7 @@ def test_final_view_is_the_composition_of_the_debug_views(water, render):
     blend = node.inputs["Dull Blend"].default_value
     dull = np.array(node.inputs["Dull Color"].default_value[:3])
     f = views[3][..., :1]
-    model = (1 - blend) * ((1 - f) * views[1] + f * views[2]) + blend * dull + views[5]
+    model = lake_composition(views[1], views[2], f, blend, dull, views[5])
     error = np.abs(views[0] - model)[mask]
     # The refraction's weight squared, as EEVEE gives with Thickness left unconnected.
     squared = (1 - blend) * ((1 - f) * views[1] + f * f * views[2]) + blend * dull + views[5]
@@ -273,42 +265,12 @@ def test_zero_wind_gives_finite_water_that_scrolls_along_y(water, render):
     assert np.abs(still - renders[(0.0, 1.0, 0.0)])[mask].mean() < 1e-3
 
 
-def _bilinear_mirror(image, uv):
-    """GPU-style bilinear sampling with mirrored-repeat addressing; `image` (H, W, 3), row 0 at v = 0."""
-    height, width = image.shape[:2]
-    x = uv[..., 0] * width - 0.5
-    y = uv[..., 1] * height - 0.5
-    x0, y0 = np.floor(x).astype(np.int64), np.floor(y).astype(np.int64)
-    fx, fy = (x - x0)[..., None], (y - y0)[..., None]
-
-    def mirror(index, size):
-        index = np.mod(index, 2 * size)
-        return np.where(index >= size, 2 * size - 1 - index, index)
-
-    xs = (mirror(x0, width), mirror(x0 + 1, width))
-    ys = (mirror(y0, height), mirror(y0 + 1, height))
-    top = image[ys[0], xs[0]] * (1 - fx) + image[ys[0], xs[1]] * fx
-    bottom = image[ys[1], xs[0]] * (1 - fx) + image[ys[1], xs[1]] * fx
-    return top * (1 - fy) + bottom * fy
-
-
 def _bump_colour(image, uv, seconds, wind=WIND, turn=WATER_TURN, wave_length=0.1, wind_force=0.02):
     """numpy model of Debug View 4 (MODEL.md 1, steps 1-3, one layer, Bump Strength 1): the bump
     read at the wind-frame UV, its slopes turned back onto the UV axes, then into the world
-    through the water's tangent frame: +u and +v are its X and Y axes, turned by `turn`."""
-    w = np.array(wind, float) / np.hypot(*wind)
-    p = np.array((w[1], -w[0]))
-    q = np.stack((uv @ p, uv @ w + seconds * wind_force), axis=-1) / wave_length
-    t = 2.0 * _bilinear_mirror(image, q) - 1.0
-    slope = t[..., :1] * p + t[..., 1:2] * w
-    tangent, bitangent = (
-        np.array((math.cos(turn), math.sin(turn))),
-        np.array((-math.sin(turn), math.cos(turn))),
-    )
-    xy = slope[..., :1] * tangent + slope[..., 1:2] * bitangent
-    n = np.concatenate((xy, t[..., 2:]), axis=-1)
-    n /= np.linalg.norm(n, axis=-1, keepdims=True)
-    return n * 0.5 + 0.5
+    through the water's tangent frame: +u and +v are its X and Y axes, turned by `turn`
+    (`reference_models.bump_normal_colour`)."""
+    return bump_normal_colour(image, uv, wave_length, wind, seconds, wind_force, turn=turn)
 
 
 def test_the_bump_normal_is_read_in_the_placed_water_s_uvs_and_turned_with_it(water, render):

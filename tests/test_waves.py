@@ -4,19 +4,15 @@ import addon_utils
 import bpy
 import numpy as np
 import pytest
+from reference_models import SEEDS_WAVES
 
 import harness
 
 # SPEC section 2, as written there: the seeds' four waves (amplitude, wavelength, speed, direction in
-# their Y-up (x, z) plane). Written here, not read from the add-on: the group and `wave_math` both
-# take their defaults from `wave_math.DEFAULT_WAVES`, so comparing them with each other alone would
-# pass with the table changed.
-SPEC_WAVES = (
-    (0.3, 10.0, 1.0, (-1.0, 0.0)),
-    (0.4, 5.0, 2.0, (-1.0, 0.5)),
-    (0.2, 15.0, 0.5, (-1.0, 0.7)),
-    (0.3, 7.0, 1.5, (-1.0, -0.5)),
-)
+# their Y-up (x, z) plane), `reference_models.SEEDS_WAVES`. Not read from the add-on: the group and
+# `wave_math` both take their defaults from `wave_math.DEFAULT_WAVES`, so comparing them with each
+# other alone would pass with the table changed.
+SPEC_WAVES = SEEDS_WAVES
 
 
 @pytest.fixture(scope="module")

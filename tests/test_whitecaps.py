@@ -10,6 +10,7 @@ smaller view would see one crest or none. The wind is (0.8, 0.6), off the axes.
 import bpy
 import numpy as np
 import pytest
+from reference_models import monahan
 
 import harness
 
@@ -19,10 +20,6 @@ WIND = (0.8, 0.6)
 FRAMES = (1, 41, 81)  # 0, 1.7 and 3.3 s
 PIXELS = 400
 VIEW_TILES = 0.35
-
-
-def _monahan(wind):
-    return 3.84e-6 * wind**3.41
 
 
 def _label(mask):
@@ -116,8 +113,8 @@ def test_whitecaps_cover_as_much_of_the_sea_as_monahan_measured(foam, render, wi
     so 25% is three times the largest departure seen, a margin for the renders' noise."""
     views, _pixel = foam(wind, render)
     share = np.mean([(view > 0.5).mean() for view in views])
-    print(f"{wind:g} m/s: whitecaps {share:.4f} of the sea, Monahan {_monahan(wind):.4f}")
-    assert 0.75 * _monahan(wind) < share < 1.25 * _monahan(wind), share / _monahan(wind)
+    print(f"{wind:g} m/s: whitecaps {share:.4f} of the sea, Monahan {monahan(wind):.4f}")
+    assert 0.75 * monahan(wind) < share < 1.25 * monahan(wind), share / monahan(wind)
 
 
 def _repeat_across(view, pixel):

@@ -16,16 +16,9 @@ is `Re(c Z)` for some complex constant `c` (the hull's strength and the response
 """
 
 import numpy as np
+from reference_models import G, hull_spectrum
 
-G = 9.81
 CUSP_TAN = 1.0 / np.sqrt(2.0)  # tan θ where the two systems meet (the cusp): 35.26°
-
-
-def spectrum(k, length):
-    """Each direction's share of the waves, by wavenumber: `k² exp(-(k L / 2π)²)`, made 1 at its
-    peak (waves one hull length long)."""
-    kl = np.asarray(k) * length / (2.0 * np.pi)
-    return kl**2 * np.exp(1.0 - kl**2)
 
 
 def field(x, y, speed, length, system="both", samples=6000, chunk=2000):
@@ -47,7 +40,7 @@ def field(x, y, speed, length, system="both", samples=6000, chunk=2000):
     }[system]
     theta = theta[keep]
     k = k0 / np.cos(theta) ** 2
-    weight = spectrum(k, length) * (theta_max * 2.0 / (samples - 1))
+    weight = hull_spectrum(k, length) * (theta_max * 2.0 / (samples - 1))
     kc, ks = k * np.cos(theta), k * np.sin(theta)
     out = np.empty(len(x), complex)
     for start in range(0, len(x), chunk):

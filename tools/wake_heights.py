@@ -17,8 +17,8 @@ tools/wake_heights.py`; it prints the constants and the fit's worst error (about
 """
 
 import numpy as np
+from reference_models import G, hull_spectrum
 
-G = 9.81
 FROUDE = np.concatenate([np.arange(0.25, 1.0, 0.0125), np.arange(1.0, 3.001, 0.05)])
 
 
@@ -41,8 +41,7 @@ def pattern(x, y, froude, length=1.0, cell=0.0):
         q2 = 1.0 + tau * tau
         q = np.sqrt(q2)
         phase = k_scale * (x - y * tau) * q + sign * np.pi / 4.0
-        kl = q2 * k_scale * length / (2.0 * np.pi)
-        share = kl * kl * np.exp(1.0 - kl * kl)
+        share = hull_spectrum(q2 * k_scale, length)
         if cell > 0.0:
             wavelength = 2.0 * np.pi / (q2 * k_scale)
             share = share * np.clip((wavelength / (4.0 * cell) - 0.5) / 0.5, 0.0, 1.0)

@@ -9,6 +9,7 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+import reference_models as rm
 from conftest import ROOT, load
 
 
@@ -71,9 +72,9 @@ def test_a_grown_seas_height_and_tile_follow_the_wind(addon_module):
     for wind in (5.0, 10.0, 15.0):
         for spectrum in sea.HEIGHT_STD_AT_SCALE_1:
             hs = 4.0 * sea.wave_scale(wind, spectrum) * sea.HEIGHT_STD_AT_SCALE_1[spectrum]
-            assert hs == pytest.approx(0.21 * wind**2 / sea.GRAVITY, rel=1e-9)
+            assert hs == pytest.approx(rm.pm_significant_height(wind), rel=1e-9)
         peak = sea.peak_wavelength(wind)
-        assert peak == pytest.approx(2 * math.pi * wind**2 / 9.81, rel=1e-3)
+        assert peak == pytest.approx(rm.wavelength_at_speed(wind), rel=1e-3)
         tile = sea.tile_size(wind)
         assert sea.MIN_TILE <= tile <= sea.MAX_TILE
         assert tile >= min(sea.MAX_TILE, sea.TILE_WAVES * peak)
@@ -94,7 +95,7 @@ def test_a_grown_sea_s_height_period_and_a_measured_calibration(addon_module):
     assert sea.significant_height(10.0) == pytest.approx(2.141, abs=1e-3)
     assert sea.peak_period(10.0) == pytest.approx(7.303, abs=1e-3)
     assert sea.peak_period(0.0) == 0.0
-    assert sea.sea_peak_wavelength(10.0) == pytest.approx(9.81 * 7.303**2 / (2 * math.pi), rel=1e-3)
+    assert sea.sea_peak_wavelength(10.0) == pytest.approx(rm.deep_water_wavelength(7.303), rel=1e-3)
     assert sea.sea_peak_wavelength(10.0) == pytest.approx(sea.peak_wavelength(10.0) / 0.877**2)
     assert 4 * 0.3 * sea.wave_scale(12.0, "PIERSON_MOSKOWITZ", 0.3) == pytest.approx(
         sea.significant_height(12.0)
@@ -109,12 +110,12 @@ def test_the_swell_s_wavelength_tile_and_narrow_spectrum(addon_module):
     shallow water, T sqrt(g d) as it grows shallow); its tile holds SWELL_TILE_WAVES of them, and
     Blender's Phillips spectrum with its settings peaks at the tile's ring of that many waves."""
     sea = addon_module("water.sea.sea_math")
-    assert sea.wavelength(10.0) == pytest.approx(9.81 * 100 / (2 * math.pi))
+    assert sea.wavelength(10.0) == pytest.approx(rm.deep_water_wavelength(10.0))
     assert sea.wavelength(10.0, 1000.0) == pytest.approx(sea.wavelength(10.0), rel=1e-9)
-    assert sea.wavelength(20.0, 2.0) == pytest.approx(20.0 * math.sqrt(9.81 * 2.0), rel=0.01)
+    assert sea.wavelength(20.0, 2.0) == pytest.approx(20.0 * math.sqrt(rm.G * 2.0), rel=0.01)
     shallow = sea.wavelength(8.0, 10.0)
     k = 2 * math.pi / shallow
-    assert 9.81 * k * math.tanh(k * 10.0) == pytest.approx((2 * math.pi / 8.0) ** 2, rel=1e-9)
+    assert rm.G * k * math.tanh(k * 10.0) == pytest.approx((2 * math.pi / 8.0) ** 2, rel=1e-9)
     for period, direction in ((4.0, (1.0, 0.0)), (9.0, (-0.28, 0.96)), (25.0, (0.0, -1.0))):
         settings = sea.swell_settings(1.0, period, direction, 200.0)
         length = sea.wavelength(period, 200.0)

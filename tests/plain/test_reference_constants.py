@@ -1,6 +1,6 @@
 """Issue 56 point 3: the add-on's reference numbers against the spec's and the literature's, written
-here, not read from the add-on (a test that reads its expectation from the code passes whatever the
-code says).
+here or in `tools/reference_models.py` (the tests' models and constants, each with its source), not
+read from the add-on (a test that reads its expectation from the code passes whatever the code says).
 
 The sources: `SPEC.md` (the project's restatement of the seeds and of nature's numbers, section 1
 the lake's defaults, 2 the ocean's waves, 5 the sea, the wakes and Snell's window), `docs/MODEL.md`
@@ -13,17 +13,13 @@ import math
 
 import numpy as np
 import pytest
+import reference_models as rm
 from conftest import ROOT, load
 
 # SPEC section 2, as written there: the seeds' four waves in their Y-up world,
 # (amplitude A, wavelength lambda, speed s, direction D in their (x, z) plane), and
 # h_i = A_i sin(dot(D_i, xz) / lambda_i + t s_i), D_i normalised.
-SEEDS_WAVES = (
-    (0.3, 10.0, 1.0, (-1.0, 0.0)),
-    (0.4, 5.0, 2.0, (-1.0, 0.5)),
-    (0.2, 15.0, 0.5, (-1.0, 0.7)),
-    (0.3, 7.0, 1.5, (-1.0, -0.5)),
-)
+SEEDS_WAVES = rm.SEEDS_WAVES
 
 
 def _to_blender(direction):
@@ -101,13 +97,13 @@ def test_water_s_physical_constants():
     # is 1.333 at 589 nm and 20 degrees C, 1.331-1.344 over the visible (sea water about 0.006 more).
     assert physics.WATER_IOR == pytest.approx(1.33, abs=1e-12)
     # Snell's window (SPEC section 5): the sky within asin(1 / 1.333) = 48.6 degrees of straight up.
-    assert math.degrees(math.asin(1.0 / physics.WATER_IOR)) == pytest.approx(48.6, abs=0.25)
+    assert math.degrees(math.asin(1.0 / physics.WATER_IOR)) == pytest.approx(rm.critical_angle(), abs=0.25)
     # Gravity: standard 9.80665 m/s^2 (9.780 at the equator, 9.832 at the poles).
     assert physics.G == pytest.approx(9.80665, abs=0.005)
     # Capillary waves (SPEC section 5): sigma / rho = 7.3e-5 m^3/s^2; clean water at 20 degrees C
     # has sigma 0.0728 N/m and rho 998.2 kg/m^3.
     assert physics.SURFACE_TENSION == pytest.approx(7.3e-5, rel=1e-12)
-    assert physics.SURFACE_TENSION == pytest.approx(0.0728 / 998.2, rel=0.01)
+    assert physics.SURFACE_TENSION == pytest.approx(rm.TENSION_OVER_DENSITY, rel=0.01)
     # Kelvin's wedge (SPEC section 5): arms at asin(1/3) = 19.47 degrees to the track.
     assert math.degrees(math.atan(physics.KELVIN_TAN)) == pytest.approx(19.47, abs=0.005)
     assert physics.KELVIN_TAN == pytest.approx(math.tan(math.asin(1.0 / 3.0)), rel=1e-12)
@@ -120,12 +116,14 @@ def test_a_grown_sea_is_pierson_and_moskowitz_s():
     g / omega_p = U / 0.877), deep-water waves g T^2 / 2 pi long."""
     sea_math, whitecap_math = load("water.sea.sea_math"), load("water.sea.whitecap_math")
     g = 9.80665
-    assert (sea_math.PM_HEIGHT, sea_math.PM_PEAK) == (0.21, 0.877)
+    assert (sea_math.PM_HEIGHT, sea_math.PM_PEAK) == (rm.PM_HEIGHT, rm.PM_PEAK) == (0.21, 0.877)
     for wind in (5.0, 12.0, 20.0):
-        assert sea_math.significant_height(wind) == pytest.approx(0.21 * wind**2 / g, rel=1e-3)
-        period = 2.0 * math.pi * wind / (0.877 * g)
+        assert sea_math.significant_height(wind) == pytest.approx(rm.pm_significant_height(wind, g), rel=1e-3)
+        period = rm.pm_peak_period(wind, g)
         assert sea_math.peak_period(wind) == pytest.approx(period, rel=1e-3)
-        assert sea_math.sea_peak_wavelength(wind) == pytest.approx(g * period**2 / (2.0 * math.pi), rel=2e-3)
+        assert sea_math.sea_peak_wavelength(wind) == pytest.approx(
+            rm.deep_water_wavelength(period, g), rel=2e-3
+        )
         assert whitecap_math.crest_speed(wind) == pytest.approx(wind / 0.877, rel=1e-12)
 
 
@@ -133,45 +131,38 @@ def test_the_sea_s_slopes_are_cox_and_munk_s():
     """SPEC section 5 (Cox and Munk 1954, clean sea): mean square slope upwind 3.16e-3 U,
     crosswind 0.003 + 1.92e-3 U; both together 0.003 + 5.12e-3 U (+- 0.004)."""
     sea_math = load("water.sea.sea_math")
-    assert sea_math.COX_MUNK_UPWIND == 3.16e-3
-    assert tuple(sea_math.COX_MUNK_CROSSWIND) == (0.003, 1.92e-3)
+    assert sea_math.COX_MUNK_UPWIND == rm.COX_MUNK_UPWIND == 3.16e-3
+    assert tuple(sea_math.COX_MUNK_CROSSWIND) == rm.COX_MUNK_CROSSWIND == (0.003, 1.92e-3)
     for wind in (0.0, 5.0, 12.0, 20.0):
         upwind, crosswind = sea_math.cox_munk_slopes(wind)
-        assert upwind == pytest.approx(3.16e-3 * wind, abs=1e-15)
-        assert crosswind == pytest.approx(0.003 + 1.92e-3 * wind, rel=1e-12)
+        assert upwind == pytest.approx(rm.cox_munk(wind)[0], abs=1e-15)
+        assert crosswind == pytest.approx(rm.cox_munk(wind)[1], rel=1e-12)
         assert abs(upwind + crosswind - (0.003 + 5.12e-3 * wind)) <= 0.004
 
 
 def test_whitecaps_cover_what_monahan_and_o_muircheartaigh_measured():
     """SPEC section 5: W = 3.84e-6 U^3.41 (U at 10 m)."""
     whitecap_math = load("water.sea.whitecap_math")
-    assert tuple(whitecap_math.MONAHAN) == (3.84e-6, 3.41)
+    assert tuple(whitecap_math.MONAHAN) == rm.MONAHAN == (3.84e-6, 3.41)
     for wind in (5.0, 10.0, 15.0, 20.0):
-        assert whitecap_math.monahan(wind) == pytest.approx(3.84e-6 * wind**3.41, rel=1e-12)
+        assert whitecap_math.monahan(wind) == pytest.approx(rm.monahan(wind), rel=1e-12)
 
 
 # Jerlov's water types (Jerlov 1976, Marine Optics): downwelling diffuse attenuation Kd per metre
-# at 650, 550 and 475 nm (red, green, blue), as docs/MODEL.md and tests/test_underwater_fog.py
-# quote them; the presets carry them as their absorption.
-JERLOV_KD = {
-    "jerlov_ocean_i": (0.36, 0.063, 0.018),
-    "jerlov_coastal_3": (0.46, 0.19, 0.29),
-    "jerlov_coastal_9": (0.76, 0.63, 1.23),
-}
-
-
-@pytest.mark.parametrize("preset", list(JERLOV_KD))
+# at 650, 550 and 475 nm (red, green, blue), as docs/MODEL.md quotes them (`rm.JERLOV_KD`, which
+# tests/test_underwater_fog.py renders); the presets carry them as their absorption.
+@pytest.mark.parametrize("preset", list(rm.JERLOV_KD))
 def test_the_jerlov_presets_carry_jerlov_s_attenuation(preset):
     values = json.loads((ROOT / "presets" / f"{preset}.json").read_text(encoding="utf-8"))["values"]
-    assert tuple(values["absorption"]) == JERLOV_KD[preset]
+    assert tuple(values["absorption"]) == rm.JERLOV_KD[preset]
 
 
 def test_the_caustics_fade_and_the_shafts_phase():
     # docs/MODEL.md section 8: the caustics' contrast falls as exp(-d / 8 m).
-    assert load("nodes.caustics").FADE_DEPTH == 8.0
+    assert load("nodes.caustics").FADE_DEPTH == rm.CAUSTICS_FADE_DEPTH == 8.0
     # docs/BENCHMARKS.md, light shafts: Henyey-Greenstein's g 0.85. Sea water scatters forward:
     # fits to Petzold's measured volume scattering functions give g of about 0.85-0.95 (0.92 for
     # the average particle phase function drawn from them, Mobley, Light and Water, 1994).
     anisotropy = load("nodes.underwater").SHAFTS_ANISOTROPY
-    assert anisotropy == 0.85
+    assert anisotropy == rm.SHAFTS_PHASE_G == 0.85
     assert 0.8 <= anisotropy <= 0.95
