@@ -43,17 +43,27 @@ QUICK = {
     "test_presets.py": ("test_written_presets_read_back_equal",),
     "test_water_shader.py": ("test_final_view_is_the_composition_of_the_debug_views",),  # the lake, rendered
     "test_surroundings.py": ("test_depth_and_shore_distance_match_the_bed_and_the_post",),
-    "test_open_sea.py": ("test_the_open_sea_moves_with_the_clock_and_its_waves_and_foam_grow_with_the_wind",),
+    "test_caustics.py": ("test_caustics_show_where_the_presets_and_the_surroundings_say",),
+    "test_open_sea.py": (
+        "test_the_open_sea_moves_with_the_clock_and_its_waves_and_foam_grow_with_the_wind",
+        "test_a_saved_sea_animates_and_renders_the_same_without_the_add_on",
+    ),
     "test_float_footprint.py": (
         "test_waves_four_hulls_long_pitch_it_as_its_footprint_and_it_keeps_its_draft",
+        "test_a_saved_floating_hull_rocks_the_same_without_the_add_on",
     ),
     "test_wake.py": (
         "test_floating_and_stopping_keep_the_wake_without_a_cycle_and_a_deleted_hull_leaves_none",
+        "test_a_baked_wake_renders_any_frame_alone_without_the_add_on",
     ),
     "test_keep_water_out.py": ("test_operator_panel_again_after_a_change_of_shape_and_let_in",),
     "test_underwater_switch.py": ("test_the_switch_takes_the_body_away_and_brings_it_back_with_the_samples",),
+    "test_underwater_farm.py": ("test_a_half_under_shot_renders_the_same_without_the_add_on",),
     "test_caustic_light.py": ("test_the_light_comes_and_goes_with_the_caustics",),
-    "test_cli.py": ("test_add_writes_a_new_file_with_water_and_prints_what_it_did",),
+    "test_cli.py": (
+        "test_add_writes_a_new_file_with_water_and_prints_what_it_did",
+        "test_render_writes_the_image_of_one_frame",
+    ),
     "test_saved_file.py": ("test_saved_water_renders_the_same_without_the_add_on_and_with_auto_run_off",),
 }
 
