@@ -36,6 +36,7 @@ DURATIONS = ROOT / "tests" / "durations.json"
 ALONE_S = 45.0  # a file estimated at this or more is a chunk of its own
 CHUNK_S = 60.0  # smaller files are packed into chunks of about this much
 UNKNOWN_S = 20.0  # a file not in durations.json yet
+SESSION_LIMIT_S = 900.0  # a session still running after this is stopped and failed (a hung render)
 NOISE = re.compile(r"EGL Error \(0x3009\)|^Warning: .*CUEW|^ALSA lib")
 
 
@@ -120,6 +121,26 @@ def _read_junit(path):
     return cases
 
 
+def _session(command, env):
+    """(exit status, output) of one pytest session; one past SESSION_LIMIT_S is stopped (124)."""
+    try:
+        proc = subprocess.run(
+            command,
+            cwd=ROOT,
+            env=env,
+            stdout=subprocess.PIPE,
+            stderr=subprocess.STDOUT,
+            text=True,
+            timeout=SESSION_LIMIT_S,
+        )
+    except subprocess.TimeoutExpired as stopped:
+        output = stopped.output or ""
+        if isinstance(output, bytes):
+            output = output.decode(errors="replace")
+        return 124, f"{output}\nstopped after {SESSION_LIMIT_S:.0f} s: a test hung (the log above)"
+    return proc.returncode, proc.stdout
+
+
 def _work(jobs, args, show_all, done, lock, total):
     while True:
         try:
@@ -131,12 +152,9 @@ def _work(jobs, args, show_all, done, lock, total):
         junit = Path(tmp) / "junit.xml"
         command, env = _pytest(job.run, ["-q", f"--junitxml={junit}", *args, *job.files], tmp)
         start = time.monotonic()
-        proc = subprocess.run(
-            command, cwd=ROOT, env=env, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True
-        )
+        job.rc, output = _session(command, env)
         job.seconds = time.monotonic() - start
-        job.rc = proc.returncode
-        job.log = "\n".join(line for line in proc.stdout.splitlines() if not NOISE.search(line))
+        job.log = "\n".join(line for line in output.splitlines() if not NOISE.search(line))
         job.cases = _read_junit(junit)
         shutil.rmtree(tmp, ignore_errors=True)
         with lock:
