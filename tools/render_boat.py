@@ -1,19 +1,19 @@
-"""Renders boats and their wakes (docs/boat_wakes.png): a boat crossing the lake at 4 m/s and one
+"""Renders boats and their wakes (out/boat_wakes.png): a boat crossing the lake at 4 m/s and one
 on the open sea (6 m/s wind) at 5 m/s, each from a chase camera 10 m from it, behind, aside and
-above, side by side. The boat (`render_sea.boat`: a 6 m hull and a cabin) floats with `api.float_on_water`,
-which gives it its wake; the frames before are stepped in order, as a render of the animation
-does. Run with `tools/demo boat`.
+above, side by side. The boat (`render_sea.boat`: a 6 m hull and a cabin) floats with
+`api.float_on_water`, which gives it its wake; the frames before are stepped in order, as a render
+of the animation does. Run with `tools/demo boat` (`tools/demo --docs boat`: copied to docs/ too).
 """
 
 import math
-import shutil
 import sys
 import tempfile
 import time
 
 import numpy as np
+from demo_output import OUT, publish
 from render_ocean import sky_world
-from render_sea import OUT, boat, write_png
+from render_sea import boat, write_png
 
 import harness
 
@@ -77,8 +77,7 @@ def main():
     ).object
     right = chase(bpy, scene, sea, 5.0, "boat_sea")
     write_png(OUT / "boat_wakes.png", np.concatenate([left, right], axis=1))
-    shutil.copyfile(OUT / "boat_wakes.png", harness.ROOT / "docs" / "boat_wakes.png")
-    print(f"wrote {OUT / 'boat_wakes.png'} in {time.monotonic() - start:.0f} s", flush=True)
+    publish(OUT / "boat_wakes.png", note=f"in {time.monotonic() - start:.0f} s")
     return 0
 
 

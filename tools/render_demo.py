@@ -16,24 +16,21 @@ depth (Beer-Lambert), foams along the waterline and around what stands in it, an
 the sun's caustics play on the sand under it. Its insets are the transmittance, foam and
 caustics views (Debug View 6, 7 and 8).
 
-All three are copied to docs/. Run through `tools/demo` (`tools/demo shore`
-renders only the shore image; `--preview` renders it small and quick, to out/
-only, for looking at a change).
+With `tools/demo --docs` all three are copied to docs/ too (`demo_output.publish`).
+Run through `tools/demo` (`tools/demo shore` renders only the shore image;
+`--preview` renders it small and quick, to out/ only, for looking at a change).
 """
 
 import math
-import shutil
 import sys
 import tempfile
 import time
 from pathlib import Path
 
 import numpy as np
+from demo_output import OUT, publish
 
 import harness
-
-OUT = harness.ROOT / "out"
-DOCS = harness.ROOT / "docs"
 
 MAIN_SIZE = (640, 360)
 SAMPLES = 16
@@ -556,7 +553,8 @@ def render_shore(bpy, work, progress, preview=False):
 
 
 def main(argv=()):
-    """`shore`: only the shore image; `--preview`: only the shore image, small and quick, to out/."""
+    """`shore`: only the shore image; `--preview`: only the shore image, small and quick, to out/
+    only; the pictures go to docs/ too when `tools/demo --docs` asked (`demo_output.publish`)."""
     preview = "--preview" in argv
     lake = not preview and "shore" not in argv
     views = 1 + (0 if preview else len(SHORE_VIEWS))
@@ -568,7 +566,6 @@ def main(argv=()):
         flush=True,
     )
     OUT.mkdir(parents=True, exist_ok=True)
-    DOCS.mkdir(parents=True, exist_ok=True)
     written = []
     with tempfile.TemporaryDirectory(prefix="water_surface_demo_") as tmp:
         work = Path(tmp)
@@ -583,12 +580,11 @@ def main(argv=()):
         shore = save_png(bpy, render_shore(bpy, work, progress, preview=preview), OUT / name)
         print(f"the shore took {progress.elapsed() - shore_start:.0f} s", flush=True)
     if preview:
-        print(f"wrote {shore} (a preview: docs/ left alone)", flush=True)
+        publish(shore, docs=False, note="(a preview: never copied to docs/)")
     else:
         written.append(shore)
     for path in written:
-        shutil.copyfile(path, DOCS / path.name)
-        print(f"wrote {path} and {DOCS / path.name}", flush=True)
+        publish(path)
     print(f"done in {progress.elapsed():.0f} s", flush=True)
     return 0
 

@@ -1,22 +1,21 @@
-"""Renders the ocean preset under a generated sky image: out/ocean.png, copied to docs/.
+"""Renders the ocean preset under a generated sky image: out/ocean.png.
 
 The sky is an equirectangular image made here with numpy (a gradient, a sun,
 soft cloud bands) and packed as the world's Environment Texture, so the ocean
 shading looks it up in the reflected direction, as the seeds sample their sky
-cube, and glints where it reflects the sun. Run with `tools/demo ocean`.
+cube, and glints where it reflects the sun. Run with `tools/demo ocean` (`tools/demo --docs
+ocean`: copied to docs/ too).
 """
 
-import shutil
 import sys
 import tempfile
 import time
 
 import numpy as np
+from demo_output import OUT, publish
 
 import harness
 
-OUT = harness.ROOT / "out"
-DOCS = harness.ROOT / "docs"
 SIZE = (640, 360)
 SUN_DIRECTION = np.array((0.0, 0.96, 0.28))  # towards the sun: ahead of the camera, low
 
@@ -81,11 +80,7 @@ def main():
     print(f"[1/1] ocean, {SIZE[0]} x {SIZE[1]}, Blender {bpy.app.version_string} ...", flush=True)
     OUT.mkdir(parents=True, exist_ok=True)
     harness.render(scene, OUT / "ocean.png")
-    DOCS.mkdir(parents=True, exist_ok=True)
-    shutil.copyfile(OUT / "ocean.png", DOCS / "ocean.png")
-    print(
-        f"wrote {OUT / 'ocean.png'} and {DOCS / 'ocean.png'} in {time.monotonic() - start:.0f} s", flush=True
-    )
+    publish(OUT / "ocean.png", note=f"in {time.monotonic() - start:.0f} s")
     return 0
 
 

@@ -1,27 +1,24 @@
 """Renders the open sea: with whitecaps and a floating boat-like object (out/open_sea.png), and
 meeting a low sandy island (out/open_sea_shore.png: the bed through the shallows, shore foam,
-caustics), both copied to docs/; and the sea states (docs/open_sea_states.png): 5, 15 and 25 m/s
-(columns) from 3 m and from 40 m up (rows), each with the boat (`tools/demo sea states`). The sky
-is the ocean demo's generated image
-(`render_ocean.sky_world`); the seas are the `open_sea` preset at 15 and 6 m/s; the boat (a hull
-and a cabin, joined) floats with `api.float_on_water`. Run with `tools/demo sea`
-(`tools/demo sea shore`: the island only).
+caustics); and the sea states (out/open_sea_states.png): 5, 15 and 25 m/s (columns) from 3 m and
+from 40 m up (rows), each with the boat (`tools/demo sea states`). The sky is the ocean demo's
+generated image (`render_ocean.sky_world`); the seas are the `open_sea` preset at 15 and 6 m/s;
+the boat (a hull and a cabin, joined) floats with `api.float_on_water`. Run with `tools/demo sea`
+(`tools/demo sea shore`: the island only; `tools/demo --docs sea ...`: copied to docs/ too).
 """
 
 import math
-import shutil
 import struct
 import sys
 import tempfile
 import time
 import zlib
 
+from demo_output import OUT, publish
 from render_ocean import sky_world
 
 import harness
 
-OUT = harness.ROOT / "out"
-DOCS = harness.ROOT / "docs"
 SIZE = (640, 360)
 # The sun lamp where the sky image has its sun (`render_ocean.SUN_DIRECTION`: straight ahead,
 # 16.3 degrees up): the sea reflects both, so one elsewhere glitters where no sun is.
@@ -81,11 +78,11 @@ def sunny_sea(bpy, sun_rotation, wind_speed, before_sea=None):
 
 
 def render(bpy, scene, name, what):
-    """Renders frame 60 to out/<name>.png and copies it to docs/."""
+    """Renders frame 60 to out/<name>.png; returns its path."""
     scene.frame_set(60)
     print(f"[{name}] {what}, {SIZE[0]} x {SIZE[1]}, Blender {bpy.app.version_string} ...", flush=True)
     harness.render(scene, OUT / f"{name}.png")
-    shutil.copyfile(OUT / f"{name}.png", DOCS / f"{name}.png")
+    return OUT / f"{name}.png"
 
 
 STATES = (5.0, 15.0, 25.0)  # m/s: a gentle breeze, a near gale, a storm (Beaufort 3, 7, 10)
@@ -140,7 +137,6 @@ def sea_states(bpy):
         [np.concatenate([tiles[row, wind] for wind in STATES], axis=1) for row in range(len(VIEWS))], axis=0
     )
     write_png(OUT / "open_sea_states.png", sheet)
-    shutil.copyfile(OUT / "open_sea_states.png", DOCS / "open_sea_states.png")
 
 
 def main():
@@ -148,24 +144,22 @@ def main():
     bpy = harness.start()
     harness.install(harness.build_zip(tempfile.mkdtemp(prefix="water_surface_dist_")))
     OUT.mkdir(parents=True, exist_ok=True)
-    DOCS.mkdir(parents=True, exist_ok=True)
     if sys.argv[1:] == ["states"]:
         sea_states(bpy)
-        print(f"wrote {OUT / 'open_sea_states.png'} in {time.monotonic() - start:.0f} s", flush=True)
+        publish(OUT / "open_sea_states.png", note=f"in {time.monotonic() - start:.0f} s")
         return 0
     # The open sea at 6 m/s round a sandy island, from 14 m up.
     scene, _sea = sunny_sea(bpy, (45.0, 0.0, 150.0), 6.0, before_sea=lambda: island(bpy))
     harness.add_camera(scene, (6.0, -2.0, 14.0), (-4.0, 34.0, 0.0), lens=30)
-    render(bpy, scene, "open_sea_shore", "open sea round an island")
-    print(f"wrote {OUT / 'open_sea_shore.png'} in {time.monotonic() - start:.0f} s", flush=True)
+    shore = render(bpy, scene, "open_sea_shore", "open sea round an island")
+    publish(shore, note=f"in {time.monotonic() - start:.0f} s")
     if sys.argv[1:] == ["shore"]:
         return 0
     # The open sea at 15 m/s with a boat floating on it, from 3 m up.
     scene, sea = sunny_sea(bpy, (70.0, 0.0, 180.0), 15.0)
     harness.addon("api").float_on_water(boat(bpy), sea, tilt_damping=0.3)
     harness.add_camera(scene, (0.0, -4.0, 3.0), (6.0, 40.0, 0.0), lens=28)
-    render(bpy, scene, "open_sea", "open sea")
-    print(f"wrote {OUT / 'open_sea.png'} in {time.monotonic() - start:.0f} s", flush=True)
+    publish(render(bpy, scene, "open_sea", "open sea"), note=f"in {time.monotonic() - start:.0f} s")
     return 0
 
 

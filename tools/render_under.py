@@ -1,17 +1,17 @@
-"""Renders the view under the water (docs/underwater.png): on the left a diver 4 m under the open
+"""Renders the view under the water (out/underwater.png): on the left a diver 4 m under the open
 sea (4 m/s wind) looking up at a floating 6 m boat through Snell's window; on the right a camera
 in the surface (Clip Start 0.1 m) at an island's sandy shore, half over and half under the water,
 the waterline and its meniscus across the lens. EEVEE, as the add-on sets it up. Run with
-`tools/demo under`.
+`tools/demo under` (`tools/demo --docs under`: copied to docs/ too).
 """
 
 import math
-import shutil
 import sys
 import tempfile
 
 import numpy as np
-from render_sea import DOCS, OUT, SKY_SUN, boat, island, sunny_sea, write_png
+from demo_output import OUT, publish
+from render_sea import SKY_SUN, boat, island, sunny_sea, write_png
 
 import harness
 
@@ -55,8 +55,7 @@ def main():
     right = shore(bpy)
     gap = np.ones((SIZE[1], 6, 3))
     write_png(OUT / "underwater.png", np.concatenate([left, gap, right], axis=1))
-    shutil.copyfile(OUT / "underwater.png", DOCS / "underwater.png")
-    print(f"wrote {DOCS / 'underwater.png'}", flush=True)
+    publish(OUT / "underwater.png")
     return 0
 
 
