@@ -116,6 +116,7 @@ def test_on_the_default_lake_the_panel_says_the_mesh_is_too_coarse_and_offers_a_
     note = next(change for change in changes if "too coarse" in change)
     print(note)
     assert "Resolution 129 or more" in note  # 128 m at 1 m: a 4 m hull's waves need 1 m cells
+    assert "the wake of 'Boat'" in note, "the note names the hull (it said '?')"
     (modifier,) = harness.addon("water.boats.wake").wake_modifiers(water)
     detail = modifier.node_group.interface.items_tree["Detail"]
     assert harness.addon("water.waves").get_wave_input(modifier, "Detail") <= detail.max_value

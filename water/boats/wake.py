@@ -197,10 +197,10 @@ def coarse_note(modifier):
     if cell <= wanted:
         return None
     size = max(water.dimensions[:2]) or 1.0
-    source = getattr(source_of(modifier), "name", "?")
+    source = getattr(source_of(modifier), "name", "?")  # the hull's name
     resolution = min(int(np.ceil(size / wanted)) + 1, schema.RESOLUTION.max)
     return (
-        f"'{water.name}''s mesh is too coarse to show the wake of '{getattr(source, 'name', '?')}' "
+        f"'{water.name}''s mesh is too coarse to show the wake of '{source}' "
         f"(cells {cell:.3g} m, its waves need {wanted:.2g} m): add the water with Resolution "
         f"{resolution} or more, or subdivide it"
     )
