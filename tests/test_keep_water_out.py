@@ -296,6 +296,15 @@ def test_operator_panel_again_after_a_change_of_shape_and_let_in(scene):
 def test_nothing_to_keep_out_of_is_refused_with_a_reason(scene):
     water, box = _lake_with_box(scene)
     keep_out = harness.addon("water.boats.keep_out")
+    # A hull in another scene only: its dry hole would show in this one where no hull is.
+    elsewhere = bpy.data.scenes.new("Elsewhere")
+    scene.collection.objects.unlink(box)
+    elsewhere.collection.objects.link(box)
+    with pytest.raises(keep_out.KeepOutError, match="not in a scene with 'Lake'"):
+        _api().keep_water_out(box, water)
+    assert not keep_out.hull_nodes(water.active_material), "nothing was made"
+    elsewhere.collection.objects.unlink(box)
+    scene.collection.objects.link(box)
     wall = bpy.data.objects.new("Wall", bpy.data.meshes.new("Wall"))
     wall.data.from_pydata([(0, 0, -1), (2, 0, -1), (2, 0, 1), (0, 0, 1)], [], [(0, 1, 2, 3)])
     scene.collection.objects.link(wall)

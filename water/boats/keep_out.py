@@ -230,6 +230,8 @@ def keep_water_out(obj, water, depsgraph=None):
         raise KeepOutError("Water cannot be kept out of water: select the hull and the water")
     if obj.type not in GEOMETRY_TYPES:
         raise KeepOutError(f"'{obj.name}' has no surface to keep the water out of")
+    if not set(obj.users_scene) & set(water.users_scene):  # its hole would show where no hull is
+        raise KeepOutError(f"'{obj.name}' is not in a scene with '{water.name}': link it to that scene first")
     material = water_material(water)
     check_editable(material)
     depsgraph = depsgraph or bpy.context.evaluated_depsgraph_get()
