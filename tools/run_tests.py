@@ -181,12 +181,19 @@ def _counts(cases):
 
 
 def _record(done, known):
+    """Each file's seconds in this run (its tests' sum, plus a session's start), the larger of the
+    versions' where several run the same selection, written over `known`."""
+    fresh = {}
     for job in done:
         per_file = {}
         for nodeid, seconds, _ in job.cases:
-            per_file[nodeid.split("::")[0]] = per_file.get(nodeid.split("::")[0], 0.0) + seconds
+            name = nodeid.split("::")[0]
+            per_file[name] = per_file.get(name, 0.0) + seconds
+        table = fresh.setdefault(job.run.key, {})
         for name, seconds in per_file.items():
-            known.setdefault(job.run.key, {})[name] = round(seconds + 3.0, 1)  # + a session's start
+            table[name] = max(table.get(name, 0.0), round(seconds + 3.0, 1))
+    for key, table in fresh.items():
+        known.setdefault(key, {}).update(table)
     DURATIONS.write_text(json.dumps(known, indent=1, sort_keys=True) + "\n", encoding="utf-8")
     _say(f"wrote {DURATIONS.relative_to(ROOT)}")
 
@@ -253,7 +260,9 @@ def main(argv=None):
     times.parent.mkdir(exist_ok=True)
     rows = sorted(((s, job.run.version, n, o) for job in done for n, s, o in job.cases), reverse=True)
     times.write_text(json.dumps(rows, indent=0) + "\n", encoding="utf-8")
-    if options.record:
+    if options.record and options.args:  # a selection's per-file sums are not the files' costs
+        _say("--record skipped: it records the whole suite only, run without a selection")
+    elif options.record:
         _record(done, known)
     elapsed = time.monotonic() - start
     _say(

@@ -33,3 +33,16 @@ def test_a_session_past_its_limit_is_stopped_and_failed(monkeypatch):
     assert status == 124
     assert output.startswith("started") and "stopped after 1 s" in output
     assert run_tests._session(["bash", "-c", "echo fine"], dict(os.environ)) == (0, "fine\n")
+
+
+def test_recording_keeps_each_file_s_largest_cost_over_the_versions(tmp_path, monkeypatch):
+    monkeypatch.setattr(run_tests, "DURATIONS", tmp_path / "durations.json")
+    monkeypatch.setattr(run_tests, "ROOT", tmp_path)
+    older, newer = (run_tests.Run(v, sys.executable, "lts") for v in ("4.2.23", "4.5.15"))
+    jobs = [
+        run_tests.Job(older, ["tests/test_a.py"], 0.0, cases=[("tests/test_a.py::t1", 10.0, "passed")]),
+        run_tests.Job(newer, ["tests/test_a.py"], 0.0, cases=[("tests/test_a.py::t1", 4.0, "passed")]),
+    ]
+    known = {"all": {"tests/test_b.py": 50.0}}
+    run_tests._record(jobs, known)
+    assert known == {"all": {"tests/test_b.py": 50.0}, "lts": {"tests/test_a.py": 13.0}}
