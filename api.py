@@ -9,10 +9,14 @@ whatever extension repository it was installed into::
     water_api = importlib.import_module(name + ".api")
     added = water_api.add_water(preset="windy_river", size=40)
 
-Bad input raises PresetError, AddWaterError, MirrorSetupError, SurroundingsError, PhysicalCausticsError,
-FloatError, KeepOutError, WakeError, RemoveWaterError, OpenSeaError,
+Bad input raises a `WaterError`, the one base of the add-on's errors, each class naming what it is
+about: PresetError (a value of the wrong type, NaN, an infinity), NotWaterError, KindError (the
+water's kind does not allow it), NeedsRepairError, UnderwaterError, NoCameraError, WrongTypeError
+(a scene that is no scene), AddWaterError, MirrorSetupError, SurroundingsError,
+PhysicalCausticsError, FloatError, KeepOutError, WakeError, RemoveWaterError, OpenSeaError,
 NotEditableError (linked or overridden data, never edited) or FileJobError, each with a one-line
-message; nothing is left half made.
+message; nothing is left half made. Each keeps its builtin base too (ValueError, RuntimeError;
+WrongTypeError a TypeError).
 """
 
 from __future__ import annotations
@@ -21,6 +25,7 @@ import bpy
 
 from . import presets as _presets
 from .presets import PresetError
+from .water import apply as _apply
 from .water import camera_clip as _camera_clip
 from .water import files as _files
 from .water import kind as _kind
@@ -37,14 +42,22 @@ from .water.boats import wake as _wake
 from .water.boats.floating import FloatError
 from .water.boats.keep_out import KeepOutError
 from .water.boats.wake import WakeError
-from .water.editable import NotEditableError, check_editable
+from .water.editable import NotEditableError
+from .water.errors import (
+    KindError,
+    NeedsRepairError,
+    NoCameraError,
+    NotWaterError,
+    UnderwaterError,
+    WaterError,
+    WrongTypeError,
+)
 from .water.files import FileJobError
 from .water.mirror import MirrorSetupError
 from .water.physical_caustics import PhysicalCausticsError
 from .water.plane import AddedWater, AddWaterError
 from .water.plane import add_water as _add_water
 from .water.removal import RemoveWaterError
-from .water.repair import needs_repair
 from .water.sea import open_sea as _open_sea
 from .water.sea.open_sea import OpenSeaError
 from .water.surroundings import SurroundingsError
@@ -55,12 +68,19 @@ __all__ = (
     "FileJobError",
     "FloatError",
     "KeepOutError",
+    "KindError",
     "MirrorSetupError",
+    "NeedsRepairError",
+    "NoCameraError",
     "NotEditableError",
+    "NotWaterError",
     "OpenSeaError",
     "PhysicalCausticsError",
     "PresetError",
     "RemoveWaterError",
+    "UnderwaterError",
+    "WaterError",
+    "WrongTypeError",
     "add_wake_source",
     "add_water",
     "add_water_to_file",
@@ -149,11 +169,9 @@ def setup_mirror(water: bpy.types.Object, scene: bpy.types.Scene | None = None) 
 
 def add_waves(water: bpy.types.Object) -> bpy.types.NodesModifier:
     """Adds (or finds) the four-sine `Water Waves` modifier and refits the mirror probe to it.
-    MirrorSetupError for an object that is not water, or an open sea (its waves are its Ocean
-    modifier)."""
-    why = _kind.refusal(water, "waves", subject=f"'{getattr(water, 'name', water)}'")
-    if why is not None:
-        raise MirrorSetupError(why)
+    NotWaterError for an object that is not water, KindError for an open sea (its waves are its
+    Ocean modifier)."""
+    _apply.check_allowed(water, "waves")
     modifier = _waves.add_waves(water)
     _mirror.fit_probe(water)
     return modifier
@@ -259,24 +277,25 @@ def bake(water: bpy.types.Object, scene: bpy.types.Scene | None = None) -> list[
 
 
 def read_values(water: bpy.types.Object) -> dict:
-    """The water's shader values, keyed as in presets (ocean shading: the keys it shares with the
-    lake's, the bump's scroll, absorption, foam and caustics)."""
-    return _values.read_values(_values.water_material(water))
+    """Every value `write_values` sets, keyed as in presets: the shader values (ocean shading: the
+    keys it shares with the lake's, the bump's scroll, absorption, foam and caustics),
+    `underwater`, `light_shafts` and, on an open sea, `whitecaps`; a preset saved from them
+    restores the water. NotWaterError for an object that is not water."""
+    return _apply.read_water(water)
 
 
 def write_values(water: bpy.types.Object, values: dict) -> None:
-    """Sets the water's shader values from preset keys (ocean shading: those it shares with the
-    lake's); each value is clamped into range.
+    """Sets the water's values from preset keys as a preset does (`apply_preset`): the shader
+    values (ocean shading: those it shares with the lake's; a part whose value crosses 0 comes in
+    or goes out), `underwater`, `light_shafts`, an open sea's `whitecaps`, and the caustic light
+    that follows Caustics. Each value is clamped into range; the keys made when adding (size,
+    resolution, waves, shading, the sea's) and unknown keys are left alone.
 
-    NotEditableError for linked or overridden water; MirrorSetupError for a water needing repair.
+    Refused before anything changes: PresetError for a value of the wrong type, NaN or an
+    infinity (naming the key); UnderwaterError for Light Shafts with Underwater off;
+    NotWaterError, NotEditableError for linked or overridden water, NeedsRepairError.
     """
-    material = _values.water_material(water)
-    check_editable(water, material)
-    problem = needs_repair(material) if material is not None else None
-    if problem:
-        raise MirrorSetupError(problem)
-    _values.write_values(material, values)
-    _underwater.fit_light(water)
+    _apply.apply_values(water, values)
 
 
 def switch_part(water: bpy.types.Object, part: str, on: bool = True) -> list[str]:
@@ -286,13 +305,10 @@ def switch_part(water: bpy.types.Object, part: str, on: bool = True) -> list[str
     `write_values` does the same when a switch (Absorption, Foam Amount, Caustics) crosses 0.
     Returns what it did, in words.
 
-    ValueError for another word; NotEditableError for linked water.
+    KindError (a ValueError) for another word; NotWaterError, NotEditableError for linked water,
+    NeedsRepairError.
     """
-    material = _values.water_material(water)
-    check_editable(water, material)
-    problem = needs_repair(material) if material is not None else None
-    if problem:
-        raise MirrorSetupError(problem)
+    material = _apply.check_water(water)
     return _values.switch_part(material, part, on) + _underwater.fit_light(water)
 
 
@@ -304,12 +320,12 @@ def set_underwater(
     Scatter Color, the ocean's Deep Color), by a hidden child `"<water> Underwater"` made only while
     the camera is near or under the surface; off, that child goes. Returns what it did, in words.
 
-    MirrorSetupError for an object that is not water; NotEditableError for linked water.
+    Refused before anything changes: NotWaterError for an object that is not water,
+    NotEditableError for linked water, PresetError for an `on` that is no bool, WrongTypeError for
+    a `scene` that is no Scene (its name, say).
     """
-    why = _kind.refusal(water, "underwater", subject=f"'{getattr(water, 'name', water)}'")
-    if why is not None:
-        raise MirrorSetupError(why)
-    return _underwater.switch(water, scene or bpy.context.scene, on)
+    _apply.check_allowed(water, "underwater")
+    return _apply.apply_values(water, {"underwater": on}, scene or bpy.context.scene)
 
 
 def set_light_shafts(water: bpy.types.Object, share: float) -> list[str]:
@@ -318,19 +334,12 @@ def set_light_shafts(water: bpy.types.Object, share: float) -> list[str]:
     rather than absorbs, so the sun's shafts show, patterned by the caustics. The water's
     extinction stays what it was; 0 costs nothing. Returns what it did, in words.
 
-    MirrorSetupError for an object that is not water or has Underwater off; NotEditableError for
-    linked water.
+    Refused before anything changes: PresetError for a share that is no number, NaN or an
+    infinity; UnderwaterError with Underwater off; NotWaterError for an object that is not water;
+    NotEditableError for linked water.
     """
-    why = _kind.refusal(water, "underwater", subject=f"'{getattr(water, 'name', water)}'")
-    if why is not None:
-        raise MirrorSetupError(why)
-    check_editable(water)
-    try:
-        return _underwater.set_light_shafts(water, share)
-    except NotEditableError:
-        raise
-    except ValueError as error:
-        raise MirrorSetupError(str(error)) from error
+    _apply.check_allowed(water, "underwater")
+    return _apply.apply_values(water, {"light_shafts": share})
 
 
 def extend_camera_clip(
@@ -338,7 +347,7 @@ def extend_camera_clip(
 ) -> list[str]:
     """Moves the Clip End of `camera` (default: the scene's) past the farthest corner of `water`,
     so none of it is cut off (an open sea reaches kilometres; a camera sees 100 m by default).
-    Returns the change in words, [] when it already sees all of it; ValueError without a camera."""
+    Returns the change in words, [] when it already sees all of it; NoCameraError without a camera."""
     return _camera_clip.extend_clip(scene or bpy.context.scene, water, camera)
 
 
@@ -366,21 +375,14 @@ def preset_ids() -> list[str]:
 
 
 def apply_preset(water: bpy.types.Object, preset: str) -> None:
-    """Sets the lake water's shader values from a preset (its plane values are left alone).
+    """Sets the lake water's values from a preset as `write_values` does, the same path the
+    operator takes: shader values, `underwater`, `light_shafts` and the caustic light (its plane
+    values are left alone).
 
-    PresetError for water whose kind takes no presets (ocean shading), as the operator refuses it.
+    PresetError for an unknown preset, or water whose kind takes no presets (ocean shading), as
+    the operator refuses it; NotWaterError, NotEditableError, NeedsRepairError.
     """
-    chosen = _presets.get(preset)
-    why = _kind.refusal(water, "presets", subject=f"'{getattr(water, 'name', water)}'")
-    why = why or _kind.preset_refusal(chosen.name, chosen.values)
-    if why is not None:
-        raise PresetError(why)
-    material = _values.water_material(water)
-    check_editable(water, material)
-    problem = needs_repair(material)
-    if problem:
-        raise MirrorSetupError(problem)
-    _values.set_values(material, chosen.values)  # checked and clamped when read
+    _apply.apply_preset(water, preset)
 
 
 def add_water_to_file(source: str, target: str, **options: object) -> str:

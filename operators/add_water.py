@@ -5,7 +5,8 @@ from bpy_extras import object_utils
 
 from .. import presets
 from ..presets import schema
-from ..water.plane import AddWaterError, add_water
+from ..water.errors import WaterError
+from ..water.plane import add_water
 from ._props import add_field_properties
 
 KEYS = tuple(field.key for field in schema.FIELDS)
@@ -109,7 +110,7 @@ class OBJECT_OT_water_surface_add(object_utils.AddObjectHelper, bpy.types.Operat
                 matrix=object_utils.add_object_align_init(context, self),
                 **given,
             )
-        except (presets.PresetError, AddWaterError) as error:
+        except WaterError as error:  # PresetError (a wrong type, NaN), UnderwaterError, AddWaterError
             self.report({"ERROR"}, str(error))
             return {"CANCELLED"}
         for key, value in added.values.items():

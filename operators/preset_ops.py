@@ -3,8 +3,9 @@
 import bpy
 
 from .. import presets
-from ..water import kind
-from ..water.values import read_values, set_values, water_material
+from ..water import apply, kind
+from ..water.errors import WaterError
+from ..water.values import water_material
 from . import _poll
 
 
@@ -34,13 +35,15 @@ class OBJECT_OT_water_surface_preset_apply(bpy.types.Operator):
         material = _active_water(self, context)
         if material is None:
             return {"CANCELLED"}
-        preset = presets.get(self.preset)
-        why = kind.preset_refusal(preset.name, preset.values)
-        if why is not None:
-            self.report({"ERROR"}, why)
+        try:
+            preset = presets.get(self.preset)
+            # The one path (`apply.py`): shader values, underwater, light shafts, caustic light.
+            changes = apply.apply_preset(context.active_object, preset.id, context.scene)
+        except WaterError as error:
+            self.report({"ERROR"}, str(error))
             return {"CANCELLED"}
-        set_values(material, preset.values)  # checked and clamped when the preset was read
-        self.report({"INFO"}, f"Applied preset '{preset.name}' to '{material.name}'")
+        done = f": {'; '.join(changes)}" if changes else ""
+        self.report({"INFO"}, f"Applied preset '{preset.name}' to '{material.name}'{done}")
         return {"FINISHED"}
 
 
@@ -72,7 +75,8 @@ class OBJECT_OT_water_surface_preset_add(bpy.types.Operator):
         if material is None:
             return {"CANCELLED"}
         try:
-            preset_id = presets.save_user_preset(self.name, read_values(material), overwrite=self.replace)
+            values = apply.read_water(context.active_object)  # every key a preset applies
+            preset_id = presets.save_user_preset(self.name, values, overwrite=self.replace)
         except presets.PresetExistsError:
             self.report(
                 {"ERROR"},

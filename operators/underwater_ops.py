@@ -3,8 +3,8 @@ through, on or off."""
 
 import bpy
 
-from ..water import underwater
-from ..water.editable import NotEditableError
+from ..water import apply
+from ..water.errors import WaterError
 from . import _poll
 
 
@@ -31,8 +31,8 @@ class OBJECT_OT_water_underwater(bpy.types.Operator):
     def execute(self, context):
         water = context.active_object
         try:
-            changes = underwater.switch(water, context.scene, self.enable)
-        except NotEditableError as error:
+            changes = apply.apply_values(water, {"underwater": self.enable}, context.scene)  # the one path
+        except WaterError as error:
             self.report({"ERROR"}, str(error))
             return {"CANCELLED"}
         state = "on" if self.enable else "off"

@@ -11,9 +11,10 @@ from dataclasses import dataclass
 from numbers import Real
 
 from ..nodes import ocean, water_surface
+from ..water.errors import WaterError
 
 
-class PresetError(ValueError):
+class PresetError(WaterError, ValueError):
     """A preset that cannot be used: not JSON, not an object, or a value of the wrong type."""
 
 
@@ -281,10 +282,18 @@ def _clamp(value, field):
     return min(max(value, field.min), field.max)
 
 
+def _finite(number, key):
+    """`number` unchanged when finite; PresetError naming the key for NaN or an infinity."""
+    if not math.isfinite(number):
+        raise PresetError(f"'{key}' must be finite, not {number}")
+    return number
+
+
 def _check_type(field, value):
-    """`value` unchanged when it has the field's type; PresetError naming the key and the type."""
+    """`value` unchanged when it has the field's type and its numbers are finite; PresetError
+    naming the key and the type (or the NaN, the infinity)."""
     if field.kind in ("float", "int"):
-        _number(value, field.key)
+        _finite(_number(value, field.key), field.key)
     elif field.kind == "bool":
         if not isinstance(value, bool):
             raise PresetError(f"'{field.key}' must be true or false, not {value!r}")
@@ -292,7 +301,8 @@ def _check_type(field, value):
         if not isinstance(value, str) or value not in field.choices:
             raise PresetError(f"'{field.key}' must be one of {', '.join(field.choices)}, not {value!r}")
     else:
-        _numbers(value, field)
+        for number in _numbers(value, field):
+            _finite(number, field.key)
     return value
 
 
@@ -301,9 +311,10 @@ def check_types(values):
     each known key of `values` holds a value of its field's type; other keys are not looked at.
 
     The type rule of presets read from JSON (`check_value`), for values from scripts: a number
-    is an int or a float, never a bool nor a string; `wind_direction` and the colours are 2 or 3
-    such numbers; a bool is True or False; a choice one of its strings. Ranges are not checked:
-    callers clamp (`clamp_values`).
+    is an int or a float, never a bool nor a string, and finite (NaN or an infinity is refused,
+    as in a preset file: a NaN stored in the shader washes the water out); `wind_direction` and
+    the colours are 2 or 3 such numbers; a bool is True or False; a choice one of its strings.
+    Ranges are not checked: callers clamp (`clamp_values`).
     """
     if not isinstance(values, Mapping):
         raise PresetError(f"values must be a dict of preset keys, not {type(values).__name__}")

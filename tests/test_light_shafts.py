@@ -136,5 +136,5 @@ def test_light_shafts_off_by_default_and_kept_in_range(addon):
     api.set_light_shafts(lit, 3.0)
     assert underwater.light_shafts(lit) == 1.0
     api.set_underwater(lit, False, scene)
-    with pytest.raises(harness.addon("water.mirror").MirrorSetupError, match="Underwater is off"):
+    with pytest.raises(api.UnderwaterError, match="Underwater is off"):
         api.set_light_shafts(lit, 0.5)

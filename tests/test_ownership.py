@@ -248,7 +248,10 @@ def _describe(water):
     modifiers = [(m.type, m.node_group.get("water_surface_role")) for m in water.modifiers]
     probe = harness.addon("water.mirror").find_probe(water)
     return {
-        "values": {k: np.round(v, 5).tolist() for k, v in _api().read_values(water).items()},
+        "values": {
+            k: v if isinstance(v, bool) else np.round(v, 5).tolist()  # `underwater` is a bool
+            for k, v in _api().read_values(water).items()
+        },
         "vertices": len(water.data.vertices),
         "rest plane": np.round(harness.addon("water.mirror").rest_bounds(water), 4).tolist(),
         "groups": groups,

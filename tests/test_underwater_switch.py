@@ -89,7 +89,7 @@ def test_the_operator_switches_and_refuses_what_is_not_water(addon, scene):
     cube = harness.add_cube(scene, (0, 0, 5), name="Cube")
     _activate(cube)
     assert not bpy.ops.object.water_underwater.poll()
-    with pytest.raises(_api().MirrorSetupError, match="Cube"):
+    with pytest.raises(_api().NotWaterError, match="Cube"):
         _api().set_underwater(cube, True)
 
 

@@ -10,6 +10,7 @@ import math
 from mathutils import Vector
 
 from .editable import check_editable
+from .errors import NoCameraError
 
 MARGIN = 1.05  # the Clip End goes this much past the farthest corner
 
@@ -37,11 +38,11 @@ def clip_note(scene, water):
 
 def extend_clip(scene, water, camera=None):
     """Moves the Clip End of `camera` (default: the scene's) past `water`'s farthest corner;
-    returns the change in words ([] when it already sees all of it). ValueError without a camera;
+    returns the change in words ([] when it already sees all of it). NoCameraError without one;
     NotEditableError for a linked camera."""
     camera = camera or scene.camera
     if camera is None or camera.type != "CAMERA":
-        raise ValueError("the scene has no camera")
+        raise NoCameraError("the scene has no camera")
     reach = far_edge(camera, water)
     if camera.data.clip_end >= reach:
         return []

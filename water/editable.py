@@ -6,11 +6,13 @@ file is reloaded, so every operator refuses them with a message saying what to d
 
 import os
 
+from .errors import WaterError
+
 _KINDS = {"NODETREE": "Node group", "LIGHT": "Light", "MESH": "Mesh", "OBJECT": "Object"}
 _FIX = "make it local (Object > Relations > Make Local) or edit it in its library"
 
 
-class NotEditableError(ValueError):
+class NotEditableError(WaterError, ValueError):
     """A data-block the add-on would edit comes from a library."""
 
 

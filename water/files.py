@@ -45,14 +45,14 @@ from pathlib import Path
 
 import bpy
 
-from ..presets import PresetError
 from .boats import wake
-from .plane import AddWaterError, add_water, resolve_values
+from .errors import WaterError
+from .plane import add_water, resolve_values
 
 IMAGE_FORMATS = {".png": "PNG", ".exr": "OPEN_EXR", ".jpg": "JPEG", ".jpeg": "JPEG", ".tif": "TIFF"}
 
 
-class FileJobError(RuntimeError):
+class FileJobError(WaterError, RuntimeError):
     """A file job that cannot run: a missing file, a bad path or value."""
 
 
@@ -227,7 +227,7 @@ def add_water_to_file(
         raise FileJobError(f"the output must be a .blend file, not {target.name}")
     try:
         resolve_values(preset, **values)  # a bad preset or value fails before the file is read
-    except PresetError as error:
+    except WaterError as error:  # PresetError, UnderwaterError
         raise FileJobError(str(error)) from error
     _open(source)
     scene = _scene(scene)
@@ -235,7 +235,7 @@ def add_water_to_file(
         added = add_water(
             scene, preset=preset, mirror_setup=mirror_setup, see_surroundings=see_surroundings, **values
         )
-    except (PresetError, AddWaterError) as error:
+    except WaterError as error:  # PresetError, AddWaterError
         raise FileJobError(str(error)) from error
     try:
         bpy.ops.wm.save_as_mainfile(filepath=str(target))

@@ -22,6 +22,7 @@ from ..nodes.material import glint_sun
 from ..nodes.ownership import is_original, mark, owned
 from . import kind, sun_link
 from .editable import check_editable
+from .errors import WaterError
 from .ledger import claim, held_paths, holder_object, holders, release
 from .ledger import holder as ledger_holder
 from .repair import needs_repair
@@ -35,7 +36,7 @@ SKY_COLOR = (0.45, 0.6, 0.85)
 SKY_NAME = "Sky"
 
 
-class MirrorSetupError(ValueError):
+class MirrorSetupError(WaterError, ValueError):
     """The mirror set-up cannot run on what it was given."""
 
 

@@ -17,6 +17,7 @@ import bpy
 from ..nodes.material import first_sun, fit_parts, glint_sun, water_node
 from . import kind, underwater
 from .editable import check_editable
+from .errors import WaterError
 from .ledger import claim, holder_object, release
 from .ledger import holder as ledger_holder
 from .surroundings import surroundings_collection
@@ -29,7 +30,7 @@ REFRACTIVE = "cycles.caustics_refractive"
 MIN_BOUNCES = {"transmission_bounces": 8, "transparent_max_bounces": 8, "max_bounces": 8}
 
 
-class PhysicalCausticsError(ValueError):
+class PhysicalCausticsError(WaterError, ValueError):
     """Physical caustics cannot be set up as asked (one line, says why)."""
 
 

@@ -10,12 +10,13 @@ from .. import presets
 from ..nodes.material import make_water_material
 from ..nodes.ocean_material import make_ocean_material
 from ..presets import schema
-from . import camera_clip, kind, mirror, scene_state, surroundings, underwater, waves
+from . import camera_clip, kind, mirror, scene_state, surroundings, waves
+from .apply import apply_values, light_shafts_refusal
 from .editable import check_editable
+from .errors import UnderwaterError, WaterError
 from .grid import grid_mesh, max_resolution
 from .sea import open_sea, sea_math
 from .sea.sea_mesh import new_sea_mesh
-from .values import set_values
 
 
 def new_water_mesh(name, size, resolution=2):
@@ -25,13 +26,13 @@ def new_water_mesh(name, size, resolution=2):
 
 
 def dress_water(obj, scene, values):
-    """Gives `obj` a new material (lake or ocean shading) set to `values`, and the waves if asked."""
+    """Gives `obj` a new material (lake or ocean shading) for `values`, and the waves if asked; the
+    values themselves are set by `apply.apply_values`, the one path (see `add_water`)."""
     check_editable(obj, obj.data)
     if kind.kind_of_values(values) == kind.LAKE:
         material = make_water_material(name=obj.name, scene=scene)
     else:
         material = make_ocean_material(name=obj.name, scene=scene)
-    set_values(material, values)  # clamped once, by `resolve_values`
     obj.data.materials.clear()
     obj.data.materials.append(material)
     # Sunlight goes through water to what lies below (the seeds' refraction map saw the scene
@@ -40,7 +41,6 @@ def dress_water(obj, scene, values):
     obj.visible_shadow = False
     if kind.kind_of_values(values) == kind.OPEN_SEA:
         open_sea.set_sea(obj, values, scene)
-        open_sea.whitecaps_input(material).default_value = values["whitecaps"]
     elif values.get("waves"):
         waves.add_waves(obj)
     return material
@@ -50,7 +50,8 @@ def resolve_values(preset="lake", **overrides):
     """A preset's values with `overrides` (preset keys) on top, all clamped: the one place a new
     water's values enter (the operator, the API and the command line all come through here).
 
-    Raises PresetError for an unknown preset or key, or a value of the wrong type.
+    Raises PresetError for an unknown preset or key, or a value of the wrong type, NaN or an
+    infinity; UnderwaterError for Light Shafts with Underwater off.
     """
     unknown = set(overrides) - set(schema.BY_KEY)
     if unknown:
@@ -59,7 +60,11 @@ def resolve_values(preset="lake", **overrides):
     schema.check_types(given)
     values = dict(presets.get(preset).values)
     values.update(given)
-    return schema.clamp_values(values)
+    values = schema.clamp_values(values)
+    why = light_shafts_refusal("the new water", values["light_shafts"], values["underwater"])
+    if why is not None:  # as `apply_values` refuses them on a water, before anything is made
+        raise UnderwaterError(why)
+    return values
 
 
 @dataclass
@@ -84,7 +89,7 @@ class AddedWater:
         return text
 
 
-class AddWaterError(RuntimeError):
+class AddWaterError(WaterError, RuntimeError):
     """Adding water failed; nothing it made is left behind."""
 
 
@@ -113,7 +118,8 @@ def add_water(
     is added and the lake stays one quad (the panel's Surroundings button adds
     them later).
     Atomic: on any failure everything it made is removed and `AddWaterError`
-    (one line) is raised; PresetError for an unknown preset or value.
+    (one line) is raised; PresetError for an unknown preset or value (of the wrong type, NaN,
+    an infinity), UnderwaterError for Light Shafts with Underwater off, before anything is made.
     """
     scene = scene or bpy.context.scene
     values = resolve_values(preset, **overrides)
@@ -137,9 +143,9 @@ def add_water(
             notes += _densify_for_surroundings(obj, values)
         material = dress_water(obj, scene, values)
         changes = surroundings.ensure_surroundings(obj, scene) if see_surroundings else []
-        changes += underwater.add(obj, scene) if values["underwater"] else []
-        if values["underwater"] and values["light_shafts"] > 0.0:
-            changes += underwater.set_light_shafts(obj, values["light_shafts"])
+        # The one path every entry point takes: shader values, parts, underwater body, light
+        # shafts, whitecaps, caustic light (`apply.py`).
+        changes += apply_values(obj, values, scene)
         changes += mirror.setup_mirror(scene, obj) if mirror_setup else []
     except Exception as error:
         _roll_back(scene, before)

@@ -19,6 +19,7 @@ from ..nodes.ownership import is_original, role_of
 from . import kind, ledger, mirror, physical_caustics, sun_link, surroundings, underwater
 from .boats import float_rig, floating, keep_out, wake
 from .editable import check_editable
+from .errors import WaterError
 from .float_constraints import float_constraints, floating_on
 from .values import water_material
 
@@ -26,7 +27,7 @@ from .values import water_material
 _OWN_KINDS = ("node_groups", "images", "worlds", "lightprobes")
 
 
-class RemoveWaterError(ValueError):
+class RemoveWaterError(WaterError, ValueError):
     """A water that cannot be removed (one line, says why)."""
 
 

@@ -30,6 +30,7 @@ from ..nodes.ocean_material import NORMAL_NODE, OCEAN_NODE, SKY_NODE, fit_shade_
 from ..nodes.ownership import role_of
 from .boats import keep_out
 from .editable import NotEditableError, check_editable, why_not_editable
+from .errors import WaterError
 from .kind import LAKE, OCEAN, shading_of
 from .sea import open_sea
 
@@ -41,7 +42,7 @@ _DRIVEN = {
 }
 
 
-class RepairError(ValueError):
+class RepairError(WaterError, ValueError):
     """A water that cannot be repaired."""
 
 

@@ -50,6 +50,7 @@ from ..nodes.ownership import is_local, is_original, mark, role_of
 from ..presets import schema
 from . import kind
 from .editable import check_editable
+from .errors import WaterError
 from .float_constraints import RIG_KEY, floating_on
 from .grid import max_resolution
 from .mirror import rest_bounds
@@ -70,7 +71,7 @@ WATER_KEY = "water_surface_surroundings"  # ID property of our collection and ca
 GRID_SPACING = 0.25  # metres: the grid finds a waterline within this
 
 
-class SurroundingsError(ValueError):
+class SurroundingsError(WaterError, ValueError):
     """The surroundings cannot be set as asked (one line, says why)."""
 
 

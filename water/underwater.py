@@ -26,6 +26,7 @@ from ..nodes.builder import ensure_group
 from ..nodes.material import drive_property, drive_socket, new_node_material
 from ..nodes.ownership import is_original, mark, owned, role_of
 from .editable import check_editable
+from .errors import UnderwaterError
 from .kind import HOLDS_WATER_MATERIAL, LAKE, shading_of, water_material
 from .ledger import claim, release
 from .ledger import holder as ledger_holder
@@ -276,14 +277,17 @@ def light_shafts(water):
 
 def set_light_shafts(water, share):
     """Sets `water`'s `Light Shafts`, clamped to 0..1: the share of its fog's light taken by
-    scattering, not absorption (`nodes/underwater.py`). Returns what it did, in words. ValueError
-    when the water has no underwater body (Underwater off) or its fog predates Light Shafts."""
+    scattering, not absorption (`nodes/underwater.py`). Returns what it did, in words.
+    UnderwaterError (a ValueError) when the water has no underwater body (Underwater off) or its
+    fog predates Light Shafts (`apply.apply_values` refuses both first)."""
     check_editable(water)
     node = fog_node(water)
     socket = node.inputs.get("Light Shafts") if node is not None else None
     if socket is None:
         why = "Underwater is off" if find(water) is None else "its underwater fog has no Light Shafts"
-        raise ValueError(f"'{water.name}' has no light shafts to set: {why} (switch Underwater off and on)")
+        raise UnderwaterError(
+            f"'{water.name}' has no light shafts to set: {why} (switch Underwater off and on)"
+        )
     share = min(max(float(share), 0.0), 1.0)
     if share > 0.0:  # a fog made before Light Shafts has its Sun Direction undriven
         material = water_material(water)

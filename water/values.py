@@ -7,6 +7,7 @@ from ..nodes.ocean import FULL_SHADE_SPEC
 from ..nodes.ocean_material import fit_shade_parts, ocean_nodes
 from ..nodes.water_surface import FULL_SPEC, PARTS
 from ..presets import schema
+from .errors import KindError, NeedsRepairError
 from .kind import LAKE, OCEAN, shading_of, water_material
 
 __all__ = ("is_water", "read_values", "switch_part", "water_material", "write_values")
@@ -116,7 +117,8 @@ def switch_part(material, name, on):
     foam or caustics, on the ocean shading (`OCEAN_PART_NAMES`) its caustics. Its switch
     (Absorption, Foam Amount, Caustics) goes to the part's usual value when it was 0, or to 0,
     and the group becomes the variant with the parts now on (`fit_parts`, `fit_shade_parts`).
-    Returns what it did, in words; ValueError for a part the water's shading does not switch.
+    Returns what it did, in words; KindError (a ValueError) for a part the water's shading does
+    not switch, NeedsRepairError for a group without the part's switch.
     """
     shading = shading_of(material)
     parts, names, spec = (
@@ -127,10 +129,12 @@ def switch_part(material, name, on):
     part = next((p for p in parts if p.name == name), None)
     if part is None:
         kind = "the ocean shading" if shading == OCEAN else "the lake"
-        raise ValueError(f"no part '{name}' to switch on {kind}: choose from {', '.join(names)}")
+        raise KindError(f"no part '{name}' to switch on {kind}: choose from {', '.join(names)}")
     node = _shader_node(material)
     if node is None or node.inputs.get(part.switch) is None:
-        raise ValueError(f"'{getattr(material, 'name', material)}' has no water shading with {part.switch}")
+        raise NeedsRepairError(
+            f"'{getattr(material, 'name', material)}' has no water shading with {part.switch}"
+        )
     socket = node.inputs[part.switch]
     value = socket.default_value
     colour = hasattr(value, "__len__")

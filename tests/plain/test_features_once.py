@@ -9,7 +9,7 @@ ROOT = Path(__file__).resolve().parents[2]
 KIND = "water/kind.py"
 ADDON = ("api.py", "cli.py", "handlers.py", "engine.py", "__init__.py", "operators", "ui", "water", "nodes")
 # The calls that ask the table, each with the feature as a string argument.
-ASKING = {"allows", "refusal", "water_allowing", "any_water", "selected_water_allowing"}
+ASKING = {"allows", "refusal", "water_allowing", "any_water", "selected_water_allowing", "check_allowed"}
 KIND_NAMES = {"LAKE", "OCEAN", "OPEN_SEA"}
 # Where a module needs the kind itself, not what it allows: (path, function) and why.
 NEEDS_THE_KIND = {

@@ -15,6 +15,7 @@ from mathutils import Vector
 
 from .. import kind, physical_caustics, surroundings
 from ..editable import check_editable
+from ..errors import WaterError
 from ..float_constraints import (
     FLOAT,
     TILT,
@@ -46,7 +47,7 @@ __all__ = (
 )
 
 
-class FloatError(RuntimeError):
+class FloatError(WaterError, RuntimeError):
     """An object cannot float as asked (a one-line message)."""
 
 

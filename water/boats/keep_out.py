@@ -26,6 +26,7 @@ from ...nodes.builder import ensure_group
 from ...nodes.ownership import is_original, mark, role_of
 from .. import kind
 from ..editable import check_editable
+from ..errors import WaterError
 from ..values import is_water, water_material
 from . import dry_mask_math
 from .float_rig import footprint_settings
@@ -38,7 +39,7 @@ SHAPE_KEY = "water_hull_shape"  # on the mask image: what the hull's shape was w
 GEOMETRY_TYPES = {"MESH", "CURVE", "SURFACE", "META", "FONT", "CURVES", "POINTCLOUD", "VOLUME"}
 
 
-class KeepOutError(ValueError):
+class KeepOutError(WaterError, ValueError):
     """Water cannot be kept out of an object (one line, says why)."""
 
 

@@ -26,6 +26,7 @@ from ...nodes.builder import ensure_group
 from ...nodes.ownership import role_of
 from ...presets import schema
 from ..editable import check_editable
+from ..errors import WaterError
 from ..float_constraints import floating_ancestor, pose_of
 from ..kind import allows, refusal
 from ..values import is_water, read_values, water_material
@@ -43,7 +44,7 @@ STRENGTH_MAX = 10.0  # the group's Strength socket's maximum
 DETAIL_MAX = 100.0  # the group's Detail socket's maximum
 
 
-class WakeError(ValueError):
+class WakeError(WaterError, ValueError):
     """A wake cannot be made (one line, says why)."""
 
 

@@ -31,6 +31,7 @@ from ...nodes.material import drive_clock, drive_socket
 from ...nodes.ocean_material import ocean_nodes
 from ...nodes.ownership import role_of
 from ..editable import check_editable
+from ..errors import WaterError
 from ..waves import set_wave_input
 from .sea_math import (
     FADE_END_TILES,
@@ -63,7 +64,7 @@ SWELL_PROPERTY = "water_sea_swell"
 SWELL_KEYS = ("sea_swell_height", "sea_swell_period", "sea_swell_direction")
 
 
-class OpenSeaError(RuntimeError):
+class OpenSeaError(WaterError, RuntimeError):
     """The open sea cannot be set up as asked (a one-line message)."""
 
 
