@@ -71,12 +71,13 @@ def any_water(cls, context, feature=None):
 
 def selected_water_allowing(cls, context, feature, nothing):
     """What Float, Keep Water Out and Add Wake ask: objects that are not water are selected
-    (`nothing` says what to select otherwise) with at most one water, which they then act on and
-    whose kind must allow `feature` (`kind.FEATURES`). A water picked by where an object is gets
-    the same refusal when the operator runs (`floating.water_for`, then the water function)."""
+    (`nothing` says what to select otherwise), whichever object is active, with at most one water
+    selected or active (`selected_waters`), which they then act on and whose kind must allow
+    `feature` (`kind.FEATURES`). A water picked by where an object is gets the same refusal when
+    the operator runs (`floating.water_for`, then the water function)."""
     if all(water_material(obj) is not None for obj in context.selected_objects):
         return refuse(cls, nothing)
-    chosen = [obj for obj in context.selected_objects if water_material(obj) is not None]
+    chosen = selected_waters(context)
     if len(chosen) > 1:
         return refuse(cls, "Select one water at most: the other objects act on it")
     why = kind.refusal(chosen[0], feature, subject=f"'{chosen[0].name}'") if chosen else None

@@ -4,6 +4,7 @@ not water, the water each one acts on, and one report for all of them."""
 from ..water.boats.floating import water_for
 from ..water.editable import NotEditableError
 from ..water.values import is_water
+from ._poll import selected_waters
 
 
 def not_water(context):
@@ -20,12 +21,13 @@ def _depth(obj):
 
 def run_on_selected(operator, context, act, errors, nothing, floating_first=True):
     """Calls `act(obj, water)` for each selected object that is not water, on the water
-    `floating.water_for` picks for it (the selected water, else, with `floating_first`, the water
-    it floats on, else the water straight below or above it); `errors` (exception types, the
-    first raised when there is no water) become warnings, and the operator is cancelled, saying
-    `nothing` and why, when no object was done. The poll (`_poll.selected_water_allowing`) has
-    made sure at most one water is selected. Returns the operator's result."""
-    chosen = next((obj for obj in context.selected_objects if is_water(obj)), None)
+    `floating.water_for` picks for it (the selected or active water, `_poll.selected_waters`,
+    else, with `floating_first`, the water it floats on, else the water straight below or above
+    it); `errors` (exception types, the first raised when there is no water) become warnings, and
+    the operator is cancelled, saying `nothing` and why, when no object was done. The poll
+    (`_poll.selected_water_allowing`) has made sure at most one water is selected or active.
+    Returns the operator's result."""
+    chosen = next(iter(selected_waters(context)), None)
     # Every object's water is found before any is acted on: acting changes the scene (a wake's
     # modifier), and ray casting an evaluated water of the depsgraph from before that crashes.
     depsgraph = context.evaluated_depsgraph_get()

@@ -108,3 +108,72 @@ def test_the_preset_key_and_the_command_line_flag_turn_it_off(addon, scene, tmp_
     water = bpy.data.objects["Water"]
     assert _body(water) is None
     assert bpy.context.scene.eevee.volumetric_samples == DEFAULT_SAMPLES
+
+
+def _near(water):
+    """The evaluated `Near` of the water's underwater body, the depsgraph brought up to date."""
+    depsgraph = bpy.context.evaluated_depsgraph_get()
+    depsgraph.update()
+    body = _body(water).evaluated_get(depsgraph)
+    owner, path = harness.addon("water.waves").input_property(body.modifiers[0], "Near")
+    return owner.path_resolve(path)
+
+
+def _new_camera(scene, name, clip_start):
+    camera = bpy.data.objects.new(name, bpy.data.cameras.new(name))
+    scene.collection.objects.link(camera)
+    camera.data.clip_start = clip_start
+    return camera
+
+
+@pytest.mark.lts
+def test_near_follows_the_scene_camera_replaced_even_after_it_had_none(addon, scene):
+    """Issue 57 point 6: the waterline's `Near` is the scene's camera's Clip Start through every
+    change of camera: another camera, the camera deleted (the scene has none a while) and a new
+    one set, without reopening the file. It stayed at 0 once the scene had been without one."""
+    default_clip = bpy.data.cameras.new("Blender's default").clip_start  # 0.1 m
+    scene.camera = _new_camera(scene, "First", 0.25)
+    water = _api().add_water(scene, preset="ocean", size=10.0, name="Sea").object
+    assert _near(water) == pytest.approx(0.25)
+    second = _new_camera(scene, "Second", 0.5)
+    scene.camera = second
+    assert _near(water) == pytest.approx(0.5)
+    bpy.data.objects.remove(second)  # deleted: the scene has no camera
+    assert scene.camera is None
+    assert _near(water) == pytest.approx(default_clip)
+    third = _new_camera(scene, "Third", 0.05)
+    scene.camera = third
+    assert _near(water) == pytest.approx(0.05), "the replaced camera's Clip Start, not 0"
+    third.data.clip_start = 0.3
+    assert _near(water) == pytest.approx(0.3)
+    scene.camera = None  # unset, not deleted
+    assert _near(water) == pytest.approx(default_clip)
+    scene.camera = _new_camera(scene, "Fourth", 0.2)
+    assert _near(water) == pytest.approx(0.2)
+
+
+def test_near_follows_a_camera_added_after_the_water(addon, scene):
+    """A water given its body in a scene with no camera: `Near` follows the first camera set."""
+    assert scene.camera is None
+    water = _api().add_water(scene, preset="clear_lake", size=10.0, name="Lake").object
+    scene.camera = _new_camera(scene, "Late", 0.4)
+    assert _near(water) == pytest.approx(0.4)
+
+
+def test_a_file_with_the_older_near_driver_still_follows_its_camera(addon, scene, tmp_path):
+    """Files saved before the driver's fallback value: their driver (no fallback) still evaluates
+    after reopening with scripts off, and follows the camera's Clip Start and a replaced camera."""
+    scene.camera = _new_camera(scene, "First", 0.25)
+    water = _api().add_water(scene, preset="ocean", size=10.0, name="Sea").object
+    (fcurve,) = _body(water).animation_data.drivers
+    for variable in fcurve.driver.variables:  # as the add-on wrote it before
+        variable.targets[0].use_fallback_value = False
+    path = tmp_path / "older.blend"
+    bpy.ops.wm.save_as_mainfile(filepath=str(path))
+    bpy.ops.wm.open_mainfile(filepath=str(path), load_ui=False, use_scripts=False)
+    scene, water = bpy.context.scene, bpy.data.objects["Sea"]
+    assert not _body(water).animation_data.drivers[0].driver.variables[0].targets[0].use_fallback_value
+    scene.camera.data.clip_start = 0.15
+    assert _near(water) == pytest.approx(0.15)
+    scene.camera = _new_camera(scene, "Second", 0.5)
+    assert _near(water) == pytest.approx(0.5)

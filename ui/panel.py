@@ -1,7 +1,9 @@
-"""Sidebar panel (3D view, tab "Water") for the active water object.
+"""Sidebar panel (3D view, tab "Water") for the active water object and the selected boats.
 
 It draws the sockets of the material's `Water Surface` group node directly:
-the node is the one source of truth, so what the `.blend` holds is what shows.
+the node is the one source of truth, so what the `.blend` holds is what shows. Below them, the
+boat tools (floating, keep-out, wake) for the selected objects that are not water, whichever
+object is active (`boat_tools_for`).
 """
 
 import bpy
@@ -19,7 +21,7 @@ from ..water.mirror import find_probe
 from ..water.repair import needs_repair
 from ..water.sea import open_sea
 from ..water.surroundings import surroundings_collection, surroundings_modifier
-from ..water.values import water_material
+from ..water.values import is_water, water_material
 from ..water.waves import input_ids, input_property, wave_modifier
 
 # The ocean shading's inputs the panel shows: (which group node, input name).
@@ -61,6 +63,26 @@ _PARTS = {
 }
 _PART_LABELS = {name: label for name, label, _tip in PART_ITEMS}
 
+# The boat tools' boxes, in the order drawn: each a `kind.FEATURES` key and a `draw_<key>` method.
+BOAT_TOOLS = ("floating", "keep_out", "wake")
+
+
+def boat_tools_for(context):
+    """(the boat tools' boxes to draw, from `BOAT_TOOLS`; the object whose state they show).
+
+    The active object not water: every box, for it (its buttons say what to select). The water
+    active: the boxes its kind allows while objects that are not water are selected too (the
+    README's "select the objects and, if you like, the water"), for the first of them by name;
+    the water alone: none. The operators act on every selected object that is not water, on the
+    selected or active water."""
+    active = context.active_object
+    if not is_water(active):
+        return BOAT_TOOLS, active
+    boats = sorted((obj for obj in context.selected_objects if not is_water(obj)), key=lambda obj: obj.name)
+    if not boats:
+        return (), None
+    return tuple(tool for tool in BOAT_TOOLS if kind.allows(active, tool)), boats[0]
+
 
 class WATER_MT_presets(bpy.types.Menu):
     """Water presets: built-in and the user's."""
@@ -79,7 +101,8 @@ class WATER_MT_presets(bpy.types.Menu):
 
 
 class VIEW3D_PT_water_surface(bpy.types.Panel):
-    """Shape the active water object"""
+    """Shape the active water object; float the selected objects on it, keep it out of them,
+    make them leave a wake"""
 
     bl_label = "Water Surface"
     bl_space_type = "VIEW_3D"
@@ -88,14 +111,19 @@ class VIEW3D_PT_water_surface(bpy.types.Panel):
 
     def draw(self, context):
         layout = self.layout
-        material = water_material(context.active_object)
-        if material is None:
+        if water_material(context.active_object) is None:
             layout.label(text="The active object is not water", icon="INFO")
             layout.operator("object.water_surface_add", icon="ADD")
-            self.draw_floating(layout, context)
-            self.draw_keep_out(layout, context)
-            self.draw_wake(layout, context)
-            return
+        else:
+            self.draw_water(layout, context)
+            layout.use_property_split = False  # the lake's inputs split; the boat rows do not
+        tools, subject = boat_tools_for(context)
+        for tool in tools:
+            getattr(self, f"draw_{tool}")(layout, context, subject)
+
+    def draw_water(self, layout, context):
+        """The active water's own settings, by its kind (or only the way back, needing repair)."""
+        material = water_material(context.active_object)
         node = water_node(material)
         row = layout.row(align=True)
         row.label(text=f"Material: {material.name}", icon="MATERIAL")
@@ -274,14 +302,14 @@ class VIEW3D_PT_water_surface(bpy.types.Panel):
             box.label(text=f"The camera's Clip End cuts the sea off at {clip_end:g} m", icon="ERROR")
             box.operator("object.water_camera_clip", icon="CAMERA_DATA")
 
-    def draw_floating(self, layout, context):
-        """Float the selected objects on the water below them, or stop."""
+    def draw_floating(self, layout, _context, obj):
+        """Float the selected objects on the water below them (or the selected one), or stop;
+        `obj`'s state (`boat_tools_for`)."""
         box = layout.box()
         box.label(text="Floating", icon="MOD_OCEAN")
         row = box.row(align=True)
         row.operator("object.water_float", icon="CON_SHRINKWRAP")
         row.operator("object.water_float_stop", text="Stop", icon="X")
-        obj = context.active_object
         water = floating.floating_on(obj) if obj else None
         if water is None:
             return
@@ -302,14 +330,13 @@ class VIEW3D_PT_water_surface(bpy.types.Panel):
                 again.draft, again.length, again.beam = (settings[k] for k in ("draft", "length", "beam"))
                 again.tilt_damping = floating.tilt_damping_of(obj)
 
-    def draw_keep_out(self, layout, context):
-        """Keep the water out of the selected hulls, or let it in again."""
+    def draw_keep_out(self, layout, context, obj):
+        """Keep the water out of the selected hulls, or let it in again; `obj`'s state."""
         box = layout.box()
         box.label(text="Dry Inside", icon="MOD_BOOLEAN")
         row = box.row(align=True)
         row.operator("object.water_keep_out", icon="MOD_BOOLEAN")
         row.operator("object.water_let_in", text="Let In", icon="X")
-        obj = context.active_object
         if obj is None:
             return
         for water in keep_out.kept_out_of(obj, context.scene):
@@ -319,14 +346,13 @@ class VIEW3D_PT_water_surface(bpy.types.Panel):
                 box.label(text=stale, icon="ERROR")
                 box.operator("object.water_keep_out", text="Keep Water Out Again", icon="FILE_REFRESH")
 
-    def draw_wake(self, layout, context):
-        """Make the selected objects leave a wake, or no longer."""
+    def draw_wake(self, layout, context, obj):
+        """Make the selected objects leave a wake, or no longer; `obj`'s state."""
         box = layout.box()
         box.label(text="Wake", icon="FORCE_HARMONIC")
         row = box.row(align=True)
         row.operator("object.water_wake_add", icon="FORCE_HARMONIC")
         row.operator("object.water_wake_remove", text="Remove", icon="X")
-        obj = context.active_object
         for modifier in wake.modifiers_of(obj) if obj is not None else ():
             box.label(text=f"Leaves a wake on '{modifier.id_data.name}'")
             note = wake.coarse_note(modifier)

@@ -188,18 +188,23 @@ def _add_light(water, material, scene):
     return f"added '{obj.name}': the sunlight's caustic pattern on what lies under '{water.name}'"
 
 
+NEAR_FALLBACK = 0.1  # Blender's default Clip Start: `Near` while the scene has no camera
+
+
 def _drive_near(modifier, scene):
     """The body's `Near` follows the scene's camera's Clip Start (a simple-expression driver: no
-    Python at render time), through a change of camera too. Only when the scene has a camera: a
-    driver whose path leads nowhere is marked invalid and stays so until the file is reopened, so
-    without one `Near` keeps Blender's default Clip Start (0.1 m) until Underwater is switched
-    off and on again."""
+    Python at render time), through a change of camera too: its variable reads the path
+    `camera.data.clip_start` on the scene, so it follows whatever camera the scene has. A path
+    that leads nowhere (no camera, or a deleted one) would mark the driver invalid, `Near` 0,
+    until the file is reopened; the variable's fallback value (Blender's default Clip Start)
+    stands in instead, and the next camera is followed at once. Made with or without a camera."""
     camera = scene.camera
-    if camera is None or camera.type != "CAMERA":
-        return
-    set_wave_input(modifier, "Near", camera.data.clip_start)
+    if camera is not None and camera.type == "CAMERA":
+        set_wave_input(modifier, "Near", camera.data.clip_start)
     owner, path = input_property(modifier, "Near")
-    drive_property(owner, path, None, "near", [("near", "SCENE", scene, "camera.data.clip_start")])
+    driver = drive_property(owner, path, None, "near", [("near", "SCENE", scene, "camera.data.clip_start")])
+    target = driver.variables["near"].targets[0]
+    target.use_fallback_value, target.fallback_value = True, NEAR_FALLBACK
 
 
 SAMPLES_PATH = "eevee.volumetric_samples"
