@@ -7,24 +7,34 @@ scene settings its mirror set-up changed (`ledger.py`: back only when unchanged 
 needed by no other water), then removes the object, and its mesh and material when no one
 else uses them, and the add-on's groups, images and sky world that nothing uses any more.
 
-A water deleted the ordinary way (X, Delete) leaves its hidden cache and probe behind, and
-lives on in the sun's light-linking collection. `remove_leftovers` (run before every save)
-finds such waters by that mark and takes them apart as Remove Water does, so the next saved
-file holds none of it: the scene settings their set-up changed go back by the same rule.
+A water deleted the ordinary way (X, Delete) is only taken out of the scene: what the add-on
+made for it still refers to it (its underwater body's modifier, the sun's light-linking
+collection), so Blender keeps it, with its hidden children, and a camera under where it was still
+sees its fog and waterline; a hull deleted so keeps its dry hole in the water. `remove_leftovers`
+finds such waters (in no scene, held only by the add-on) and hulls and takes them apart as Remove
+Water does, the scene settings their set-up changed put back by the same rule: `handlers.py` runs
+it as soon as objects leave the scenes, and before every save.
+
+Whether nothing uses a block is asked of its references (`users.unused`), not its user count,
+which a saved file leaves too high (see `users.py`).
 """
 
 import bpy
 
-from ..nodes.ownership import is_original, role_of
+from ..nodes import bump_image, caustics_image, foam_image, rough_fresnel_image
+from ..nodes.ownership import is_local, is_original, role_of
 from . import kind, ledger, mirror, physical_caustics, sun_link, surroundings, underwater
 from .boats import float_rig, floating, keep_out, wake
 from .editable import check_editable
 from .errors import WaterError
 from .float_constraints import float_constraints, floating_on
+from .users import unused
 from .values import water_material
 
 # The add-on's data kinds removed once nothing uses them (their marks say whose they are).
 _OWN_KINDS = ("node_groups", "images", "worlds", "lightprobes")
+# The generated images carry marks of their own (`nodes/packed_image.py`).
+_IMAGE_KEYS = tuple(m.VERSION_KEY for m in (bump_image, caustics_image, foam_image, rough_fresnel_image))
 
 
 class RemoveWaterError(WaterError, ValueError):
@@ -37,7 +47,11 @@ def _let_floaters_go(water):
     floaters = [
         obj
         for obj in bpy.data.objects
-        if obj != water and obj.library is None and float_constraints(obj) and floating_on(obj) == water
+        if obj.constraints  # first: it costs nothing, and few objects have any
+        and obj != water
+        and is_local(obj)
+        and float_constraints(obj)
+        and floating_on(obj) == water
     ]
     changes = []
     for obj in floaters:  # releasing removes their rigs' objects: not while going through them
@@ -54,7 +68,7 @@ def _remove_lost_caches():
     for mesh in [m for m in meshes if m.users == 0]:
         materials = [m for m in mesh.materials if kind.shading_of(m) is not None]
         bpy.data.meshes.remove(mesh)
-        for material in [m for m in materials if m.users == 0 and m.library is None]:
+        for material in [m for m in unused(materials) if is_local(m)]:
             changes.append(f"removed material '{material.name}' (its water was deleted)")
             bpy.data.materials.remove(material)
     return changes
@@ -79,17 +93,22 @@ def _remove_probe(water):
     return changes
 
 
+def _is_own(block):
+    """Whether `block` is one the add-on made itself (by its mark), local."""
+    if role_of(block) is not None:
+        return is_original(block)
+    keys = _IMAGE_KEYS if block.id_type == "IMAGE" else ()
+    return any(role_of(block, key) is not None and is_original(block, key) for key in keys)
+
+
 def _remove_unused_own_data():
     """Removes the add-on's own groups, images, worlds and probe data nothing uses any more,
     repeatedly (a group's removal frees the nested groups and images it used)."""
     removed = []
     while True:
-        found = [
-            (data_kind, block)
-            for data_kind in _OWN_KINDS
-            for block in getattr(bpy.data, data_kind)
-            if block.users == 0 and role_of(block) is not None and is_original(block)
-        ]
+        own = [(data_kind, b) for data_kind in _OWN_KINDS for b in getattr(bpy.data, data_kind) if _is_own(b)]
+        free = set(unused([block for _data_kind, block in own]))
+        found = [(data_kind, block) for data_kind, block in own if block in free]
         if not found:
             return removed
         for data_kind, block in found:
@@ -122,7 +141,7 @@ def _remove_object(water, material):
     changes.append(f"removed '{name}'")
     if mesh is not None and mesh.users == 0:
         bpy.data.meshes.remove(mesh)
-    if material is not None and material.users == 0 and material.library is None:
+    if material is not None and unused([material]) and material.library is None:
         bpy.data.materials.remove(material)
     removed = _remove_unused_own_data()
     if removed:
@@ -146,7 +165,7 @@ def _deleted(obj):
     """Whether `obj` is a water the user deleted: in no scene, kept alive only by the add-on's
     light linking (its collections, or a user's receiver collection it linked the water into) or
     the constraints of what floated on it (no fake user, no other collection of the user's)."""
-    if obj.library is not None or obj.use_fake_user or obj.users_scene or water_material(obj) is None:
+    if not is_local(obj) or obj.use_fake_user or obj.users_scene or water_material(obj) is None:
         return False
     linked = sun_link.linked_by_add_on(obj)
     return all(sun_link.is_own_receivers(c) or c.name in linked for c in obj.users_collection)
@@ -158,7 +177,8 @@ def remove_leftovers():
     probes whose water is gone; the scene settings set up for them go back as with Remove Water.
     Returns the changes in words."""
     changes = []
-    for water in [o for o in bpy.data.objects if _deleted(o)]:
+    in_scenes = {o for scene in bpy.data.scenes for o in scene.objects}  # once: `users_scene` walks them all
+    for water in [o for o in bpy.data.objects if o not in in_scenes and _deleted(o)]:
         scenes = [scene for scene in bpy.data.scenes if _held_by(scene, water)]
         parts, material = _take_apart(water, scenes)
         changes += parts + _remove_object(water, material)
@@ -175,7 +195,7 @@ def remove_leftovers():
         changes.append(f"removed the add-on's unused {', '.join(removed)}")
     for data_kind in ("scenes", "objects", "lights", "materials"):
         for block in getattr(bpy.data, data_kind):
-            if block.library is None and ledger.LEDGER_KEY in block:
+            if is_local(block) and ledger.LEDGER_KEY in block:
                 ledger.prune(block, _holder_alive)
     return changes
 

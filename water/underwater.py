@@ -30,6 +30,7 @@ from .errors import UnderwaterError
 from .kind import HOLDS_WATER_MATERIAL, LAKE, shading_of, water_material
 from .ledger import claim, release
 from .ledger import holder as ledger_holder
+from .users import unused
 from .waves import get_wave_input, input_ids, input_property, set_wave_input
 
 KEY = "water_surface_underwater"  # on the object and its material: the water's name
@@ -319,8 +320,8 @@ def _delete(obj, why=""):
     bpy.data.objects.remove(obj)
     if mesh is not None and mesh.users == 0:
         bpy.data.meshes.remove(mesh)
-    for fog in fogs:
-        if fog.users == 0 and is_original(fog):
+    for fog in unused(fogs):  # not `users`: a saved file counts the modifier's inputs once more
+        if is_original(fog):
             bpy.data.materials.remove(fog)
     return change
 

@@ -33,6 +33,7 @@ import numpy as np
 
 from ...nodes import SPECS, float_fit
 from ...nodes.builder import ensure_group
+from ...nodes.ownership import is_local
 from .. import waves
 from ..float_constraints import PATCH_WATER_KEY, RIG_KEY
 from . import footprint_math
@@ -374,7 +375,7 @@ def footprint_settings(obj):
 def remove_lost_rigs():
     """Removes the rigs whose object was deleted or no longer floats by them; returns the changes."""
     changes = []
-    for anchor in [o for o in bpy.data.objects if o.get(RIG_KEY) == "anchor" and o.library is None]:
+    for anchor in [o for o in bpy.data.objects if o.get(RIG_KEY) == "anchor" and is_local(o)]:
         owner = anchor.get(OWNER_KEY)
         poses = [o for o in bpy.data.objects if o.get(RIG_KEY) == "pose" and anchor_of(o) == anchor]
         # A floating object deleted the ordinary way may live on, in no scene, while something

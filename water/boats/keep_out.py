@@ -13,8 +13,9 @@ the same without the add-on.
 
 The mask is the hull's outline where the water can meet it: from its keel up to twice its draft
 when it floats, its whole height when not. `keep_water_out` again makes it anew (the panel says
-when the hull's shape changed); `let_water_in` takes it out. A hull deleted the ordinary way is
-let go of before the file is saved (`removal.remove_leftovers`).
+when the hull's shape changed); `let_water_in` takes it out. A hull deleted the ordinary way lives
+on out of the scene (the Texture Coordinate node holds it): it is let go of at the next update
+and before the file is saved (`remove_lost_hulls`, from `removal.remove_leftovers`).
 """
 
 import bpy
@@ -23,7 +24,7 @@ import numpy as np
 from ...nodes import SPECS
 from ...nodes import keep_out as keep_out_spec
 from ...nodes.builder import ensure_group
-from ...nodes.ownership import is_original, mark, role_of
+from ...nodes.ownership import is_local, is_original, mark, role_of
 from .. import kind
 from ..editable import check_editable
 from ..errors import WaterError
@@ -315,7 +316,7 @@ def remove_lost_hulls():
     changes."""
     changes = []
     for material in bpy.data.materials:
-        if material.library is not None or material.node_tree is None:
+        if not is_local(material) or material.node_tree is None:  # never linked or overridden
             continue
         lost = [
             (group, coords, hull)

@@ -23,7 +23,7 @@ from ...nodes import SPECS
 from ...nodes import material as material_spec
 from ...nodes import wake as wake_spec
 from ...nodes.builder import ensure_group
-from ...nodes.ownership import role_of
+from ...nodes.ownership import is_local, role_of
 from ...presets import schema
 from ..editable import check_editable
 from ..errors import WaterError
@@ -284,7 +284,7 @@ def remove_lost_sources():
     """Takes off the wakes whose object was deleted (gone, or in no scene any more); returns the
     changes."""
     changes = []
-    for water in [o for o in bpy.data.objects if o.library is None and wake_modifiers(o)]:
+    for water in [o for o in bpy.data.objects if is_local(o) and wake_modifiers(o)]:
         for modifier in wake_modifiers(water):
             source = source_of(modifier)
             if source is None or (not source.users_scene and not source.use_fake_user):
