@@ -714,8 +714,9 @@ FULL_SHADE_SPEC = GroupSpec(
     # reflectance over the slopes EEVEE's mipmaps averaged away, `rough_fresnel.py`, and a mirror
     # as much rougher); past the sea's fade (`Fade Start`, `Fade End`), whitecaps where the mesh
     # marks no crests (the far sea was bare: at 25 m/s a band 40 m up); 13: the far whitecaps from
-    # two reads of the tile (one alone repeated across the wind: stripes from high up)
-    version=13,
+    # two reads of the tile (one alone repeated across the wind: stripes from high up); 14: the
+    # lace read nearest-texel (a mipmapped read hung software EEVEE on folded crests)
+    version=14,
     description="Ocean colour: deep blue and the reflected sky by the ocean Fresnel, plus the glint; "
     "white lit foam on the crests; with the surroundings, the bed seen through shallow water, "
     "shore foam and caustics",
@@ -829,7 +830,10 @@ FULL_SHADE_SPEC = GroupSpec(
         # Closest: the tile's values stay evenly spread (blending neighbours would thin out the
         # darkest few per cent, the shares light winds ask for).
         **_tile_read("blob", WHITECAP_BLOB_TILE, 27, "foam tile B (which whitecaps)", "Closest"),
-        **_tile_read("lace", WHITECAP_TILE, 27, "foam tile b (their lace)"),
+        # Closest too: a mipmapped read of the lace, on a crest folded over in front of the camera,
+        # took software EEVEE minutes a frame (issue 57 point 1); the lace is cut sharp by the
+        # breakup's threshold anyway.
+        **_tile_read("lace", WHITECAP_TILE, 27, "foam tile b (their lace)", "Closest"),
         "lace_length": math("MULTIPLY", 26, "12 a: drawn out along the wind", b=WHITECAP_TILE[0]),
         "lace_width": math("DIVIDE", 26, "6 / a: narrowed across it", a=WHITECAP_TILE[1]),
         # Which whitecaps, by a^0.45 only: drawn out as far as their lace, one would run for

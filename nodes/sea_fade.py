@@ -23,13 +23,18 @@ NAME = "Water Sea Fade"
 # 2: whitecaps from the crests' heights (were the Ocean modifier's own foam: blotches tens of
 # metres across, a share of the sea that hardly followed the wind); 3: the crests stored once
 # where the sea is not flat, and the trail reads them (it evaluated them again per step, over
-# every point: a third of the sea's evaluation beyond the Ocean modifier's)
-VERSION = 3
+# every point: a third of the sea's evaluation beyond the Ocean modifier's); 4: the UV map follows
+# the points where they are drawn (it kept their rest place: on a crest folded over, a sliver of a
+# triangle spans metres of it, and software EEVEE's mipmapped bump reads there took minutes, issue
+# 57 point 1)
+VERSION = 4
 CREST_ATTRIBUTE = "water_crest"  # the crests (0 to 1) before their trail, stored for it to read
 REST_ATTRIBUTE = "water_rest"
 OCEAN_FOAM_ATTRIBUTE = "water_ocean_foam"  # the Ocean modifier's foam layer (version 1 read it)
 WHITECAPS_ATTRIBUTE = "water_whitecaps"
 CREST_SHARE = 0.5
+UV_MAP = "UVMap"
+UV_METRES = 128.0  # UV = position / UV_METRES + 0.5: the seeds' ocean plane, the bump's taps tile the same
 
 # The threshold's bisection: from 2 standard deviations up or down by 1, then by half the last
 # step each time: STEPS steps find it between 0 and 4 deviations, to 2 / 2^STEPS.
@@ -284,6 +289,22 @@ SPEC = GroupSpec(
             {"Name": WHITECAPS_ATTRIBUTE},
             label=f"store '{WHITECAPS_ATTRIBUTE}'",
         ),
+        # The UV map where the points are drawn: its slope across the screen stays the surface's
+        # own, however far the chop folds a crest over (the bump's reads, `ocean.py`).
+        "drawn_uv": vmath(
+            "MULTIPLY_ADD",
+            6,
+            "position / UV_METRES + 0.5",
+            b=(1.0 / UV_METRES, 1.0 / UV_METRES, 0.0),
+            c=(0.5, 0.5, 0.0),
+        ),
+        "store_uv": Node(
+            "GeometryNodeStoreNamedAttribute",
+            8,
+            {"data_type": "FLOAT2", "domain": "CORNER"},
+            {"Name": UV_MAP},
+            label=f"store '{UV_MAP}' where drawn",
+        ),
     },
     links=(
         ("rest:Attribute", "distance:#0"),
@@ -328,7 +349,10 @@ SPEC = GroupSpec(
         ("move:Geometry", "store:Geometry"),
         ("waving:Value", "store:Selection"),
         ("whitecaps:Value", "store:Value"),
-        ("store:Geometry", "output:Geometry"),
+        ("placed:Vector", "drawn_uv:#0"),
+        ("store:Geometry", "store_uv:Geometry"),
+        ("drawn_uv:Vector", "store_uv:Value"),
+        ("store_uv:Geometry", "output:Geometry"),
     ),
     tree_type="GeometryNodeTree",
 )

@@ -10,10 +10,9 @@ so the bump taps keep the seeds' ocean scale whatever the sea's size.
 
 import numpy as np
 
-from ...nodes.sea_fade import REST_ATTRIBUTE
+from ...nodes.sea_fade import REST_ATTRIBUTE, UV_METRES
 from ..grid import grid_mesh
 
-UV_METRES = 128.0  # the seeds' ocean plane: its bump taps tile the same on the sea
 INNER_SHARE = 0.5  # of the points along an axis, evenly spaced around the centre
 
 
