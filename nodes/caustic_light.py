@@ -13,14 +13,18 @@ above by about `k / (1 + k)` of the pattern's dark share (measured in docs/BENCH
 `Caustics` 0, or no sun, T is 1: no shadow at all.
 
 From above, what the water shows below already carries the pattern (the water shader's factor),
-so the sheet is made only while the camera is under the water: nothing is patterned twice.
+so the sheet is made only while the camera is under the water: nothing is patterned twice. A
+sheet made for every placement of the water (`Each Placement` 1: the camera beside the water as
+it stands itself, maybe under a collection instance's placement of it) lets all the sunlight
+through in each placement whose level the camera is over (`underwater.placement_gate`).
 """
 
 from . import bump_uv, caustics
 from .spec import GroupSpec, Node, Socket, group_node, math, pass_inputs, vmath
+from .underwater import EACH_PLACEMENT, placement_gate, placement_links
 
 NAME = "Water Caustic Light"
-VERSION = 1
+VERSION = 2  # 2: Each Placement (a collection instance's placements, each its own camera gate)
 
 INPUTS = (*bump_uv.SCROLL_INPUTS, *caustics.INPUTS[3:])  # the lake's and the ocean's names
 
@@ -44,7 +48,9 @@ def _nodes():
         "gain": math("DIVIDE", 23, "1 / (1 + k)", a=1.0),
         "t": vmath("SCALE", 24, "F / (1 + k)"),
         "t_max": vmath("MINIMUM", 25, "at most 1: a shadow only takes light away", b=(1.0, 1.0, 1.0)),
-        "shadow": Node("ShaderNodeBsdfTransparent", 26, label="sunlight let through"),
+        **placement_gate(22, 0.0),
+        "t_here": vmath("MAXIMUM", 26, "all of it where this placement's camera is over it"),
+        "shadow": Node("ShaderNodeBsdfTransparent", 27, label="sunlight let through"),
     }
     # No view offset: the shadow ray crosses the surface where its light came through.
     dropped = {("to_bed:Vector", "offset:#0"), ("from_sun:Vector", "offset:#1"), ("input:Vector", "at:#0")}
@@ -66,7 +72,10 @@ def _nodes():
         ("factor:Vector", "t:#0"),
         ("gain:Value", "t:Scale"),
         ("t:Vector", "t_max:#0"),
-        ("t_max:Vector", "shadow:Color"),
+        *placement_links(),
+        ("t_max:Vector", "t_here:#0"),
+        ("shut:Value", "t_here:#1"),
+        ("t_here:Vector", "shadow:Color"),
         ("shadow:BSDF", "output:Shadow"),
     ]
     return nodes, tuple(links)
@@ -79,7 +88,7 @@ SPEC = GroupSpec(
     version=VERSION,
     description="The caustic pattern as the shadow the surface casts on what lies under it: the "
     "sunlight let through a sheet just under the surface",
-    inputs=INPUTS,
+    inputs=(*INPUTS, EACH_PLACEMENT),
     outputs=(Socket("Shadow", "NodeSocketShader", tooltip="A transparent shader: the sunlight let through"),),
     nodes=_NODES,
     links=_LINKS,

@@ -44,6 +44,50 @@ LINE_SPAN = 3.0  # x Near either side of the view's centre: the width of a 6 mm 
 MENISCUS = 0.004  # x Near: the line's thickness, 5 pixels of a 1080-line frame through a 24 mm lens
 DOWN_FROM = 500.0  # metres over a point the ray down to the surface starts (over any crest)
 MARGIN = 1.0  # metres over the surface under it within which the camera may see the water
+DOWN_REACH = 100000.0  # metres under the camera the ray looking for water under it reaches
+
+
+def placement_gate(column, margin):
+    """Shader nodes giving `shut`: 1 where the group's `Each Placement` is on and the camera is
+    more than `margin` over the water's level (z 0) in the space of the object being shaded, 0
+    elsewhere. Per placement: a collection instance gives each of its placements its own object
+    transform at render time (the camera's place, Vector Transform from Camera to Object space, is
+    worked out in each), where Geometry Nodes sees only the original's (docs/MODEL.md section 16,
+    "Placed by instances"). Needs an input `Each Placement`; links from `placement_links()`."""
+    return {
+        "cam_here": Node(
+            "ShaderNodeVectorTransform",
+            column,
+            {"vector_type": "POINT", "convert_from": "CAMERA", "convert_to": "OBJECT"},
+            {"Vector": (0.0, 0.0, 0.0)},
+            "the camera, in this placement's space",
+        ),
+        "cam_here_xyz": Node("ShaderNodeSeparateXYZ", column + 1),
+        "cam_over": math("GREATER_THAN", column + 2, f"over the level + {margin:g}", b=margin),
+        "shut": math("MULTIPLY", column + 3, "shut: Each Placement, camera over"),
+    }
+
+
+def placement_links():
+    return (
+        ("cam_here:Vector", "cam_here_xyz:Vector"),
+        ("cam_here_xyz:Z", "cam_over:#0"),
+        ("cam_over:Value", "shut:#0"),
+        ("input:Each Placement", "shut:#1"),
+    )
+
+
+EACH_PLACEMENT = Socket(
+    "Each Placement",
+    "NodeSocketFloat",
+    0.0,
+    min=0.0,
+    max=1.0,
+    subtype="FACTOR",
+    tooltip="1 for the body made for every placement of the water (the camera beside the water as "
+    "it stands in its own place: it may be under one placed by a collection instance): each "
+    "placement shows it only while the camera is no higher than its level (+ Margin)",
+)
 
 
 def _absorb(channel, column):
@@ -91,7 +135,7 @@ def _sunlit_links(channel):
 
 FOG_SPEC = GroupSpec(
     name=FOG_NAME,
-    version=2,
+    version=3,  # 3: Each Placement (a collection instance's placements, each its own camera gate)
     description="The water between a camera under the surface and what it sees: exp(-c d) kept, "
     "L (1 - exp(-c d)) scattered in, per channel; with Light Shafts, the sunlight it scatters",
     inputs=(
@@ -126,10 +170,14 @@ FOG_SPEC = GroupSpec(
             tooltip="Where the sunlight goes (the water's own Sun Direction): the shafts' light is "
             "what is left of it at each depth",
         ),
+        EACH_PLACEMENT,
     ),
     outputs=(Socket("Volume", "NodeSocketShader"),),
     nodes={
-        "path": Node("ShaderNodeLightPath", 1),
+        "path_rays": Node("ShaderNodeLightPath", 0),
+        **placement_gate(-4, MARGIN),
+        "open": math("SUBTRACT", 0, "1 - shut", a=1.0),
+        "path": math("MULTIPLY", 1, "camera rays, this placement's"),
         "c": Node("ShaderNodeSeparateColor", 1, label="c per channel"),
         # b: the share of c scattered, the same in every channel (scattering hardly varies with colour).
         "c_least": math("MINIMUM", 1, "least c"),
@@ -174,6 +222,10 @@ FOG_SPEC = GroupSpec(
         "all": Node("ShaderNodeAddShader", 16),
     },
     links=(
+        *placement_links(),
+        ("shut:Value", "open:#1"),
+        ("path_rays:Is Camera Ray", "path:#0"),
+        ("open:Value", "path:#1"),
         ("input:Absorption", "c:Color"),
         ("c:Red", "c_least:#0"),
         ("c:Green", "c_least:#1"),
@@ -182,7 +234,7 @@ FOG_SPEC = GroupSpec(
         ("input:Light Shafts", "b_raw:#0"),
         ("c_least_all:Value", "b_raw:#1"),
         ("b_raw:Value", "b:#0"),
-        ("path:Is Camera Ray", "b:#1"),
+        ("path:Value", "b:#1"),
         ("here:Position", "here_xyz:Vector"),
         ("level:Location", "level_xyz:Vector"),
         ("level_xyz:Z", "depth_raw:#0"),
@@ -199,9 +251,9 @@ FOG_SPEC = GroupSpec(
         ("c:Red", "c_r:#0"),
         ("c:Green", "c_g:#0"),
         ("c:Blue", "c_b:#0"),
-        ("path:Is Camera Ray", "c_r:#1"),
-        ("path:Is Camera Ray", "c_g:#1"),
-        ("path:Is Camera Ray", "c_b:#1"),
+        ("path:Value", "c_r:#1"),
+        ("path:Value", "c_g:#1"),
+        ("path:Value", "c_b:#1"),
         *_sunlit_links(0),
         *_sunlit_links(1),
         *_sunlit_links(2),
@@ -209,7 +261,7 @@ FOG_SPEC = GroupSpec(
         ("input:Absorption", "cl:#0"),
         ("input:Scatter Color", "cl:#1"),
         ("cl:Vector", "glow:Color"),
-        ("path:Is Camera Ray", "glow:Strength"),
+        ("path:Value", "glow:Strength"),
         ("a_r:Volume", "rg:#0"),
         ("a_g:Volume", "rg:#1"),
         ("rg:Shader", "rgb:#0"),
@@ -396,8 +448,10 @@ _MENISCUS_LINKS = (
     ("band:Vector", "ribbon:Offset"),
     ("ribbon:Mesh", "meniscus:Geometry"),
     ("input:Meniscus Material", "meniscus:Material"),
+    ("placed:Boolean", "line_here:Switch"),
+    ("meniscus:Geometry", "line_here:False"),
     ("fog:Geometry", "all:Geometry"),
-    ("meniscus:Geometry", "all:Geometry"),
+    ("line_here:Output", "all:Geometry"),
 )
 
 
@@ -427,6 +481,30 @@ _GATE_NODES = {
     "above": Node(
         "FunctionNodeCompare", 7, {"data_type": "FLOAT", "operation": "LESS_THAN"}, {1: 0.5}, "well above"
     ),
+    # Geometry Nodes sees the water where it stands itself: a collection instance placing it
+    # elsewhere shares this one evaluation (docs/MODEL.md section 16, "Placed by instances"). A
+    # camera over no water and under none here may be under a placement: the body is made for
+    # every placement, each of which shows it only while the camera is down at its level.
+    "look_down": Node(
+        "GeometryNodeRaycast",
+        5,
+        values={"Ray Direction": (0.0, 0.0, -1.0), "Ray Length": DOWN_REACH},
+        label="down to the surface",
+    ),
+    "over": Node(
+        "GeometryNodeAttributeStatistic",
+        6,
+        {"data_type": "FLOAT", "domain": "POINT"},
+        label="over the surface (1) or not (0)",
+    ),
+    "beside": Node(
+        "FunctionNodeCompare", 7, {"data_type": "FLOAT", "operation": "LESS_THAN"}, {1: 0.5}, "over none"
+    ),
+    "off": Node("FunctionNodeBooleanMath", 8, {"operation": "AND"}, label="beside the water here"),
+    "placed": Node("FunctionNodeBooleanMath", 9, {"operation": "AND"}, label="made for every placement"),
+    "not_placed": Node("FunctionNodeBooleanMath", 10, {"operation": "NOT"}),
+    "hidden": Node("FunctionNodeBooleanMath", 11, {"operation": "AND"}, label="well above, not placed"),
+    "which": Node("GeometryNodeSwitch", 12, {"input_type": "MATERIAL"}, label="each placement's gate"),
 }
 _GATE_LINKS = (
     ("camera:Active Camera", "cam:Object"),
@@ -444,12 +522,48 @@ _GATE_LINKS = (
     ("probe:Points", "under:Geometry"),
     ("up:Is Hit", "under:Attribute"),
     ("under:Max", "above:A"),
+    ("water:Geometry", "look_down:Target Geometry"),
+    ("here:Vector", "look_down:Source Position"),
+    ("probe:Points", "over:Geometry"),
+    ("look_down:Is Hit", "over:Attribute"),
+    ("over:Max", "beside:A"),
+    ("above:Result", "off:#0"),
+    ("beside:Result", "off:#1"),
+    ("off:Boolean", "placed:#0"),
+    ("every:Boolean", "placed:#1"),
+    ("placed:Boolean", "not_placed:#0"),
+    ("above:Result", "hidden:#0"),
+    ("not_placed:Boolean", "hidden:#1"),
+    ("placed:Boolean", "which:Switch"),
+    ("input:Material", "which:False"),
+    ("input:Placed Material", "which:True"),
 )
+
+
+def _placement_inputs(what):
+    """The inputs of the body made for every placement (`what`: the fog, the caustic light)."""
+    return (
+        Socket(
+            "Every Placement",
+            "NodeSocketBool",
+            False,
+            tooltip="While the camera is beside the water as it stands here (over none of it, under "
+            f"none), make the {what} anyway, with Placed Material: a collection instance may place "
+            "the water over the camera elsewhere, and each placement gates it by the camera there. "
+            "Off: nothing is made then (as before this input)",
+        ),
+        Socket(
+            "Placed Material",
+            "NodeSocketMaterial",
+            tooltip=f"The {what} with its Each Placement on: shown only by the placements the camera "
+            "is down at",
+        ),
+    )
 
 
 SHELL_SPEC = GroupSpec(
     name=SHELL_NAME,
-    version=3,
+    version=4,  # 4: Every Placement (a body for collection instances' placements)
     description="The body of water under a water's surface, for its underwater fog; empty while the "
     "camera is well above the water",
     tree_type="GeometryNodeTree",
@@ -496,6 +610,7 @@ SHELL_SPEC = GroupSpec(
             tooltip="The waterline's thickness across the lens, times Near (0: no line)",
         ),
         Socket("Meniscus Material", "NodeSocketMaterial", tooltip="The waterline's shader"),
+        *_placement_inputs("body"),
     ),
     outputs=(Socket("Geometry", "NodeSocketGeometry"),),
     nodes={
@@ -507,6 +622,7 @@ SHELL_SPEC = GroupSpec(
         "beyond": Node(
             "FunctionNodeCompare", 7, {"data_type": "FLOAT", "operation": "GREATER_THAN"}, label="past Reach"
         ),
+        "reach_here": Node("FunctionNodeBooleanMath", 8, {"operation": "AND"}, label="past Reach, here"),
         "near": Node("GeometryNodeDeleteGeometry", 8, {"domain": "FACE"}, label="the water within Reach"),
         "lower": Node(
             "GeometryNodeSetPosition", 9, values={"Offset": (0.0, 0.0, -LOWER)}, label="a mm under"
@@ -519,6 +635,8 @@ SHELL_SPEC = GroupSpec(
         "fog": Node("GeometryNodeSetMaterial", 13),
         **_GATE_NODES,
         **_MENISCUS_NODES,
+        "every": Node("FunctionNodeBooleanMath", 8, {"operation": "AND"}, {1: True}, "Every Placement"),
+        "line_here": Node("GeometryNodeSwitch", 31, {"input_type": "GEOMETRY"}, label="no line when placed"),
         "made": Node("GeometryNodeSwitch", 32, {"input_type": "GEOMETRY"}, label="none while well above"),
     },
     links=(
@@ -530,7 +648,10 @@ SHELL_SPEC = GroupSpec(
         ("flat:Vector", "far:Vector"),
         ("far:Value", "beyond:A"),
         ("input:Reach", "beyond:B"),
-        ("beyond:Result", "near:Selection"),
+        ("input:Every Placement", "every:#0"),
+        ("beyond:Result", "reach_here:#0"),
+        ("not_placed:Boolean", "reach_here:#1"),
+        ("reach_here:Boolean", "near:Selection"),
         ("near:Geometry", "lower:Geometry"),
         ("input:Depth", "depth:#0"),
         ("depth:Value", "down:Z"),
@@ -540,9 +661,9 @@ SHELL_SPEC = GroupSpec(
         ("lower:Geometry", "closed:Geometry"),
         ("out:Mesh", "closed:Geometry"),
         ("closed:Geometry", "fog:Geometry"),
-        ("input:Material", "fog:Material"),
+        ("which:Output", "fog:Material"),
         *_GATE_LINKS,
-        ("above:Result", "made:Switch"),
+        ("hidden:Boolean", "made:Switch"),
         *_MENISCUS_LINKS,
         ("all:Geometry", "made:False"),
         ("made:Output", "output:Geometry"),
@@ -555,7 +676,7 @@ SHEET_DROP = 0.01  # metres (the water's units): the sheet under the surface, wh
 
 SHEET_SPEC = GroupSpec(
     name=SHEET_NAME,
-    version=1,
+    version=2,  # 2: Every Placement (a sheet for collection instances' placements)
     description="A copy of a water's surface just under it, for the caustic light (`Water Caustic "
     "Light`); made only while the camera is under the water",
     tree_type="GeometryNodeTree",
@@ -578,6 +699,7 @@ SHEET_SPEC = GroupSpec(
             tooltip="The sheet is made while the camera is no higher than this over the surface; "
             "above it the water shader draws the caustics on what it shows below",
         ),
+        *_placement_inputs("caustic light"),
     ),
     outputs=(Socket("Geometry", "NodeSocketGeometry"),),
     nodes={
@@ -590,15 +712,27 @@ SHEET_SPEC = GroupSpec(
         ),
         "light": Node("GeometryNodeSetMaterial", 3),
         **_GATE_NODES,
+        # Software EEVEE draws the sheet's shader into the sun's shadow maps even where every
+        # placement shuts it (3 times the render, bench/placed_body_cost.py): for every placement
+        # only while the camera is also no higher than the water's own level (+ Margin), so a
+        # camera on a shore over it pays nothing.
+        "here_xyz": Node("ShaderNodeSeparateXYZ", 4, label="the camera's height here"),
+        "low": Node("FunctionNodeCompare", 5, {"data_type": "FLOAT", "operation": "LESS_EQUAL"}, label="low"),
+        "every": Node("FunctionNodeBooleanMath", 8, {"operation": "AND"}, label="Every Placement, low"),
         "made": Node("GeometryNodeSwitch", 8, {"input_type": "GEOMETRY"}, label="none while above"),
     },
     links=(
         ("input:Water", "water:Object"),
         ("water:Geometry", "lower:Geometry"),
         ("lower:Geometry", "light:Geometry"),
-        ("input:Material", "light:Material"),
+        ("which:Output", "light:Material"),
+        ("here:Vector", "here_xyz:Vector"),
+        ("here_xyz:Z", "low:A"),
+        ("input:Margin", "low:B"),
+        ("input:Every Placement", "every:#0"),
+        ("low:Result", "every:#1"),
         *_GATE_LINKS,
-        ("above:Result", "made:Switch"),
+        ("hidden:Boolean", "made:Switch"),
         ("light:Geometry", "made:False"),
         ("made:Output", "output:Geometry"),
     ),

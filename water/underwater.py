@@ -10,13 +10,19 @@ above, a saved file renders the same without the add-on, and the panel's colours
 
 The object is seen by camera rays only (Cycles' other rays and EEVEE's probes skip it); the body
 is made only while the camera is within `Margin` of the surface or under it, so a camera that
-never goes under pays nothing. The same modifier draws the waterline across the lens (the
-`Water Meniscus` material, one for every water), its `Near` driven from the scene's camera's Clip
-Start. A second child, `"<water> Caustic Light"`, patterns the sunlight on everything under the
-water while the camera is there (`nodes/caustic_light.py`), and the light shafts too
+never goes under pays nothing. The same modifier draws the waterline across the lens (the `Water
+Meniscus` material, one for every water), its `Near` driven from the scene's camera's Clip Start.
+A second child, `"<water> Caustic Light"`, patterns the sunlight on everything under the water
+while the camera is there (`nodes/caustic_light.py`), and the light shafts too
 (`set_light_shafts`: the fog's sunlight scattered towards the eye, off by default). The objects
 and their materials carry `KEY` (the water's name when made) and the add-on's mark: `remove`
 finds them among the water's children, `remove_lost` by their parent gone.
+
+A camera over none of the water may be under a placement of it by a collection instance, which
+Geometry Nodes cannot see: the body is then made for every placement, with a second fog
+`"<water> Underwater Placed"` (`Each Placement` on) that each placement shuts in its shader while
+the camera is over its level; the caustic light likewise, `"<water> Caustic Light Placed"`
+(docs/MODEL.md section 16, "Placed by instances").
 """
 
 import bpy
@@ -37,8 +43,12 @@ KEY = "water_surface_underwater"  # on the object and its material: the water's 
 # The body and the caustic light: not waters, though they hold one's material.
 ROLE, LIGHT_ROLE = HOLDS_WATER_MATERIAL
 MATERIAL_ROLE = "Underwater Fog"
+# The same with Each Placement on: the body made for every placement (a collection instance's).
+PLACED_ROLE = "Underwater Fog Placed"
 MENISCUS_ROLE = underwater.MENISCUS_NAME  # the one waterline material every water's body shares
 LIGHT_MATERIAL_ROLE = "Caustic Light Material"
+LIGHT_PLACED_ROLE = "Caustic Light Placed"
+_MATERIAL_ROLES = (MATERIAL_ROLE, PLACED_ROLE, LIGHT_MATERIAL_ROLE, LIGHT_PLACED_ROLE)
 # The caustic light's inputs follow the water shader's inputs of the same names.
 _LIGHT_INPUTS = tuple(socket.name for socket in caustic_light.INPUTS)
 # EEVEE's volume slices: at its default 64 over 0.1-100 m the fog 2 m away in murky water is
@@ -92,16 +102,34 @@ def _group_material(name, role, group_name, group_output, material_input):
     return material, node
 
 
-def _fog_material(water, material):
-    """The fog's material, its values driven by the water's `material`."""
-    fog, node = _group_material(
-        f"{water.name} Underwater", MATERIAL_ROLE, underwater.FOG_NAME, "Volume", "Volume"
-    )
+def _fog_material(water, material, plain=None):
+    """The fog's material, its values driven by the water's `material`; with `plain` (the fog
+    material made first), the fog for every placement: Each Placement on, its Light Shafts
+    following `plain`'s."""
+    name, role = (f"{water.name} Underwater", MATERIAL_ROLE)
+    if plain is not None:
+        name, role = (f"{name} Placed", PLACED_ROLE)
+    fog, node = _group_material(name, role, underwater.FOG_NAME, "Volume", "Volume")
     fog[KEY] = water.name
     far = _FAR_COLOUR.get(shading_of(material), _OCEAN_FAR_COLOUR)
     pairs = (("Absorption", "Absorption"), ("Scatter Color", far), ("Sun Direction", "Sun Direction"))
     _drive_like(node, material, pairs)
+    if plain is not None:
+        _placed(node, plain, ("Light Shafts",))
     return fog
+
+
+def _placed(node, plain, names):
+    """`node` (a group node of a material made for every placement) gets Each Placement 1, and its
+    inputs `names` follow those of the same group's node in `plain` (simple-expression drivers)."""
+    node.inputs["Each Placement"].default_value = 1.0
+    group = bpy.utils.escape_identifier(node.name)
+    for name in names:
+        socket = node.inputs.get(name)
+        if socket is None:
+            continue
+        path = f'node_tree.nodes["{group}"].inputs["{bpy.utils.escape_identifier(name)}"].default_value'
+        drive_property(socket, "default_value", None, "v", [("v", "MATERIAL", plain, path)])
 
 
 def _meniscus_material():
@@ -134,11 +162,15 @@ def _drive_like(node, material, pairs):
             drive_socket(mine, i, "v", [("v", "MATERIAL", material, f"{path}[{i}]")])
 
 
-def _light_material(water, material):
-    """The caustic light's material: the `Water Caustic Light` shadow, its values the water's."""
-    light, node = _group_material(
-        f"{water.name} Caustic Light", LIGHT_MATERIAL_ROLE, caustic_light.NAME, "Shadow", "Surface"
-    )
+def _light_material(water, material, placed=False):
+    """The caustic light's material: the `Water Caustic Light` shadow, its values the water's
+    (`placed`: the one for every placement, Each Placement on)."""
+    name, role = (f"{water.name} Caustic Light", LIGHT_MATERIAL_ROLE)
+    if placed:
+        name, role = (f"{name} Placed", LIGHT_PLACED_ROLE)
+    light, node = _group_material(name, role, caustic_light.NAME, "Shadow", "Surface")
+    if placed:
+        node.inputs["Each Placement"].default_value = 1.0
     light[KEY] = water.name
     if hasattr(light, "use_transparent_shadow"):  # EEVEE: the shadow takes the shader's transparency
         light.use_transparent_shadow = True
@@ -186,7 +218,15 @@ def _add_light(water, material, scene):
         water, material, scene, "Caustic Light", LIGHT_ROLE, ("shadow",), underwater.SHEET_NAME
     )
     set_wave_input(modifier, "Material", _light_material(water, material))
+    _every_placement(modifier, _light_material(water, material, placed=True))
     return f"added '{obj.name}': the sunlight's caustic pattern on what lies under '{water.name}'"
+
+
+def _every_placement(modifier, placed):
+    """The body or sheet of `modifier` is made for every placement of its water, with `placed`
+    (the material whose Each Placement is on) while the camera is beside the water itself."""
+    set_wave_input(modifier, "Placed Material", placed)
+    set_wave_input(modifier, "Every Placement", True)
 
 
 NEAR_FALLBACK = 0.1  # Blender's default Clip Start: `Near` while the scene has no camera
@@ -227,8 +267,11 @@ def add(water, scene=None):
     material = water_material(water)
     if material is None:
         return []
-    if find(water) is not None:
-        return fit_light(water, scene)
+    body = find(water)
+    if body is not None:  # one made before Every Placement gets its fog for every placement
+        plain = _modifier_input(body, "Material")
+        placed = _fit_placed(water, body, lambda: _fog_material(water, material, plain=plain))
+        return placed + fit_light(water, scene)
     changes = []
     if scene is not None:
         _claim_samples(water, scene, changes)
@@ -237,6 +280,7 @@ def add(water, scene=None):
         water, material, scene or bpy.context.scene, "Underwater", ROLE, ("camera",), underwater.SHELL_NAME
     )
     set_wave_input(modifier, "Material", fog)
+    _every_placement(modifier, _fog_material(water, material, plain=fog))
     set_wave_input(modifier, "Meniscus Material", _meniscus_material())
     _drive_near(modifier, scene or bpy.context.scene)
     changes.append(f"added '{obj.name}': the water a camera under '{water.name}' sees through")
@@ -261,7 +305,35 @@ def fit_light(water, scene=None):
         return [_add_light(water, material, scene or bpy.context.scene)]
     if light is not None and not wanted:
         return [_delete(light)]
+    if light is not None:
+        return _fit_placed(water, light, lambda: _light_material(water, material, placed=True))
     return []
+
+
+def _modifier_input(obj, name):
+    """The input `name` of `obj`'s shell or sheet modifier, or None."""
+    modifier = obj.modifiers.get(underwater.SHELL_NAME) or obj.modifiers.get(underwater.SHEET_NAME)
+    if modifier is None or modifier.type != "NODES" or name not in input_ids(modifier):
+        return None
+    return get_wave_input(modifier, name)
+
+
+def _fit_placed(water, obj, make):
+    """A body or caustic light made before `Every Placement` gets its material for every placement
+    (`make()`), its group upgraded first: a file from before renders under collection instances
+    once the water is worked on again. Returns what it did, in words ([] for one that has it)."""
+    modifier = obj.modifiers.get(underwater.SHELL_NAME) or obj.modifiers.get(underwater.SHEET_NAME)
+    if modifier is None or modifier.type != "NODES" or not is_original(obj):
+        return []
+    if modifier.node_group is not ensure_group(SPECS[modifier.name], SPECS):
+        return []  # a group of the user's: theirs
+    names = input_ids(modifier)
+    if "Placed Material" not in names or "Every Placement" not in names:
+        return []  # a newer group than this add-on's, left alone
+    if _modifier_input(obj, "Placed Material") is not None or _modifier_input(obj, "Material") is None:
+        return []
+    _every_placement(modifier, make())
+    return [f"'{obj.name}': made for every placement of '{water.name}' too (collection instances)"]
 
 
 def fog_node(water):
@@ -308,8 +380,9 @@ def set_light_shafts(water, share):
 def _delete(obj, why=""):
     mesh = obj.data
     modifier = obj.modifiers.get(underwater.SHELL_NAME) or obj.modifiers.get(underwater.SHEET_NAME)
-    fog = get_wave_input(modifier, "Material") if modifier is not None and modifier.type == "NODES" else None
-    fogs = [fog] if fog is not None and role_of(fog) in (MATERIAL_ROLE, LIGHT_MATERIAL_ROLE) else []
+    names = input_ids(modifier) if modifier is not None and modifier.type == "NODES" else {}
+    found = [get_wave_input(modifier, name) for name in ("Material", "Placed Material") if name in names]
+    fogs = [fog for fog in found if fog is not None and role_of(fog) in _MATERIAL_ROLES]
     line = (
         get_wave_input(modifier, "Meniscus Material")
         if fogs and "Meniscus Material" in input_ids(modifier)
@@ -320,8 +393,13 @@ def _delete(obj, why=""):
     bpy.data.objects.remove(obj)
     if mesh is not None and mesh.users == 0:
         bpy.data.meshes.remove(mesh)
-    for fog in unused(fogs):  # not `users`: a saved file counts the modifier's inputs once more
-        if is_original(fog):
+    fogs = [fog for fog in fogs if is_original(fog)]
+    while fogs:  # not `users`: a saved file counts the modifier's inputs once more
+        gone = unused(fogs)  # the placed fog's drivers read the plain one: it goes first
+        if not gone:
+            break
+        for fog in gone:
+            fogs.remove(fog)
             bpy.data.materials.remove(fog)
     return change
 
