@@ -15,11 +15,11 @@ from . import (
     surroundings,
     underside,
     underwater,
-    wake,
     water_surface,
     water_waves,
     wind_frame,
 )
+from .boats import wake
 
 SPECS = {
     spec.name: spec

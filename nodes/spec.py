@@ -154,34 +154,3 @@ def group_node(name, column, label=""):
 def pass_inputs(node, names):
     """Links from the group's own inputs to the inputs of the same names on `node` (a nested group)."""
     return tuple((f"input:{name}", f"{node}:{name}") for name in names)
-
-
-def nest(nodes, links, keys, spec, at, inputs, outputs):
-    """Carves the nodes `keys` out of a description (`nodes`, `links`) into the nested group
-    `spec` (its name, version, description and sockets; `nodes` and `links` filled here), used
-    by one node `at` ((key, column)) in their place. `inputs` names the socket each outside
-    source feeding them comes in by ({"node:socket": "Socket"}), `outputs` the socket each of
-    their sources read outside leaves by: every crossing must be named, so nothing is lost.
-    Returns (nodes, links, spec)."""
-    keys = set(keys)
-    inside = {key: node for key, node in nodes.items() if key in keys}
-    outside = {key: node for key, node in nodes.items() if key not in keys}
-    key, column = at
-    node_type = "GeometryNodeGroup" if spec.tree_type == "GeometryNodeTree" else "ShaderNodeGroup"
-    outside[key] = Node(node_type, column, label=spec.name, group=spec.name)
-    inner, outer, fed = [], [], set()
-    for source, target in links:
-        source_in, target_in = source.partition(":")[0] in keys, target.partition(":")[0] in keys
-        if source_in and target_in:
-            inner.append((source, target))
-        elif target_in:
-            inner.append((f"input:{inputs[source]}", target))
-            if source not in fed:
-                outer.append((source, f"{key}:{inputs[source]}"))
-                fed.add(source)
-        elif source_in:
-            outer.append((f"{key}:{outputs[source]}", target))
-        else:
-            outer.append((source, target))
-    inner += [(source, f"output:{name}") for source, name in outputs.items()]
-    return outside, outer, replace(spec, nodes=inside, links=tuple(inner))

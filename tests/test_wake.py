@@ -504,7 +504,7 @@ def _nearest_instead_of_walked(group):
 def test_the_wake_worked_out_only_round_its_track_equals_it_worked_out_everywhere(addon):
     """The wake is worked out only in a zone round its track (the wedge round the chord from
     the object back to the oldest point, wider by how far the track strays), each point walking
-    to its point of the track from a coarse grid's guess (`_guess_nodes`, `_walk`). On a long
+    to its point of the track from a coarse grid's guess (`nodes/boats/wake_frame.py`). On a long
     S-bend at 6 m/s, 48 m in 8 s: a copy of the group with no selections gives the same water;
     and a copy that finds each point's track point by a nearest-point search everywhere (the
     costly way) the same wake, each walked foot as near as the nearest one."""

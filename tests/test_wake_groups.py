@@ -89,8 +89,8 @@ def _evaluate(group, points, constants, axes=("X", "Y"), output=0, absolute=True
 @pytest.fixture(scope="module")
 def kelvin(addon):
     harness.clean_scene(width=8, height=8, samples=1)
-    wake = harness.addon("nodes.wake")
-    group = harness.addon("nodes.builder").ensure_group(wake.KELVIN_SPEC, {})
+    spec = harness.addon("nodes.boats.wake_kelvin").SPEC
+    group = harness.addon("nodes.builder").ensure_group(spec, {})
     assert not group.is_modifier  # a field, not offered as a modifier
     return group
 
@@ -132,8 +132,8 @@ def test_the_kelvin_group_is_the_stationary_phase_sum_over_the_whole_patch(kelvi
 
 def test_the_height_group_times_the_patterns_height_is_kriebel_and_seeligs(addon):
     harness.clean_scene(width=8, height=8, samples=1)
-    wake = harness.addon("nodes.wake")
-    group = harness.addon("nodes.builder").ensure_group(wake.HEIGHT_SPEC, {})
+    spec = harness.addon("nodes.boats.wake_height").SPEC
+    group = harness.addon("nodes.builder").ensure_group(spec, {})
     length, depth = 4.0, 4.0
     froudes = np.array([0.3, 0.35, 0.4, 0.5, 0.7, 1.0, 1.5, 2.5])
     drafts = np.array([0.0, 0.5, 1.0, 2.0])
@@ -166,8 +166,8 @@ def _ring_model(r, t, beam, strength=1.0):
 
 def test_the_ring_group_runs_out_at_the_group_speed_spreading_and_fading(addon):
     harness.clean_scene(width=8, height=8, samples=1)
-    wake = harness.addon("nodes.wake")
-    group = harness.addon("nodes.builder").ensure_group(wake.RING_SPEC, {})
+    spec = harness.addon("nodes.boats.wake_ring").SPEC
+    group = harness.addon("nodes.builder").ensure_group(spec, {})
     beam = 0.4
     r, t = np.meshgrid(np.linspace(0.0, 8.0, 321), np.linspace(0.0, 5.0, 101))
     points = np.stack([r.ravel(), t.ravel()], axis=1)
@@ -248,8 +248,8 @@ def test_the_track_group_keeps_where_the_object_has_been_as_numpy_does(addon):
     where and when the object went in, and its single values are the last step's."""
     scene = harness.clean_scene(width=8, height=8, samples=1)
     scene.render.fps = FPS
-    wake = harness.addon("nodes.wake")
-    group = harness.addon("nodes.builder").ensure_group(wake.TRACK_SPEC, {})
+    spec = harness.addon("nodes.boats.wake_track").SPEC
+    group = harness.addon("nodes.builder").ensure_group(spec, {})
     assert not group.is_modifier
     source = bpy.data.objects.new("test source", None)
     scene.collection.objects.link(source)
@@ -341,8 +341,8 @@ def test_the_foam_group_lies_round_the_hull_and_along_the_trails_line_as_numpy_s
     patch the foam group's values are numpy's, and along the trail's line it is unbroken between
     its points (the line, not its points)."""
     harness.clean_scene(width=8, height=8, samples=1)
-    wake = harness.addon("nodes.wake")
-    group = harness.addon("nodes.builder").ensure_group(wake.FOAM_SPEC, {})
+    foam = harness.addon("nodes.boats.wake_foam")
+    group = harness.addon("nodes.builder").ensure_group(foam.SPEC, {})
     assert not group.is_modifier
     turn = math.radians(30.0)
     rotation = np.array([[math.cos(turn), -math.sin(turn)], [math.sin(turn), math.cos(turn)]])
@@ -362,7 +362,7 @@ def test_the_foam_group_lies_round_the_hull_and_along_the_trails_line_as_numpy_s
     water = _mesh_object(
         "test water",
         points,
-        {"test_foot": ("INT", foot.astype(np.int32)), wake.FOAM_ATTRIBUTE: ("FLOAT", before)},
+        {"test_foot": ("INT", foot.astype(np.int32)), foam.FOAM_ATTRIBUTE: ("FLOAT", before)},
     )
     tree, into, out, foam = _modifier_tree("test: foam", group)
     nodes, links = tree.nodes, tree.links
@@ -478,8 +478,8 @@ def test_the_zone_group_holds_every_wave_and_the_foam_and_little_else(addon, tur
     turn); Low and High bound it; Newer says which end of the track is newest, whichever order
     its points come in."""
     harness.clean_scene(width=8, height=8, samples=1)
-    wake = harness.addon("nodes.wake")
-    group = harness.addon("nodes.builder").ensure_group(wake.ZONE_SPEC, {})
+    spec = harness.addon("nodes.boats.wake_zone").SPEC
+    group = harness.addon("nodes.builder").ensure_group(spec, {})
     assert group.is_modifier  # geometry in and out
     now, length, beam, fade = 30.0, 6.0, 2.4, 6.0
     times = np.arange(31.0)  # a point a second, 4 m apart

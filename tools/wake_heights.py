@@ -1,6 +1,6 @@
-"""Works out `nodes/wake.py`'s PATTERN_HEIGHT: how high the group's own Kelvin pattern stands,
-crest to trough, a hull's length to the side of its track, by Froude number, before it is
-scaled to Kriebel and Seelig's height.
+"""Works out `nodes/boats/wake_height.py`'s PATTERN_HEIGHT: how high the group's own Kelvin
+pattern stands, crest to trough, a hull's length to the side of its track, by Froude number,
+before it is scaled to Kriebel and Seelig's height.
 
 The group's height is `scale x f(x / L, y / L, Fr)`: `f` the stationary-phase pattern (its two
 waves, each `p̂(k) sqrt(2π / |ψ''|) cos(ψ ± π/4)`, Airy's width on the arms), which depends on
@@ -23,7 +23,7 @@ FROUDE = np.concatenate([np.arange(0.25, 1.0, 0.0125), np.arange(1.0, 3.001, 0.0
 
 
 def pattern(x, y, froude, length=1.0, cell=0.0):
-    """The group's pattern `f` (`nodes/wake.py` `KELVIN_SPEC`), `x` behind and `y` across in
+    """The group's pattern `f` (`nodes/boats/wake_kelvin.py`), `x` behind and `y` across in
     metres; with a mesh `cell`, waves shorter than four cells fade out (to none at two cells, as
     the group's "the mesh can hold it")."""
     speed = froude * np.sqrt(G * length)

@@ -45,7 +45,6 @@ def test_the_groups_and_the_sea_read_them():
     assert load("water.sea.sea_math").GRAVITY == physics.G
     assert load("nodes.water_surface").IOR == physics.WATER_IOR
     assert load("nodes.caustics").IOR == physics.WATER_IOR
-    wake = load("nodes.wake")
-    assert wake.SPEC.nodes["k_scale"].values[0] == physics.G
+    assert load("nodes.boats.wake").SPEC.nodes["k_scale"].values[0] == physics.G
     # The ring's dispersion, g + (σ/ρ) k², is worked out in its own nested group.
-    assert wake.RING_SPEC.nodes["ring_sk2"].values[1] == physics.SURFACE_TENSION
+    assert load("nodes.boats.wake_ring").SPEC.nodes["ring_sk2"].values[1] == physics.SURFACE_TENSION

@@ -1,6 +1,6 @@
 """Wakes: an object that moves through the water leaves a Kelvin wake and foam in its mesh.
 
-Per source, the water gets a `Water Wake` Geometry Nodes modifier (`nodes/wake.py`: the track
+Per source, the water gets a `Water Wake` Geometry Nodes modifier (`nodes/boats/`: the track
 kept by a simulation zone, the stationary-phase Kelvin pattern, the foam), after its waves and
 before its surroundings' sample, so the surroundings see the wake too. The modifier reads where
 the object is through an Object socket: a floating object's rig anchor (the anchor moves as the
@@ -21,7 +21,7 @@ import numpy as np
 
 from ...nodes import SPECS
 from ...nodes import material as material_spec
-from ...nodes import wake as wake_spec
+from ...nodes.boats import wake as wake_spec
 from ...nodes.builder import ensure_group
 from ...nodes.ownership import is_local, role_of
 from ...presets import schema
