@@ -33,7 +33,7 @@ def main():
     underwater = harness.addon("water.underwater")
     light = underwater.find(added.object, underwater.LIGHT_ROLE)
     api = harness.addon("api")
-    group = bpy.data.node_groups[harness.addon("nodes.underwater").FOG_NAME]
+    group = bpy.data.node_groups[harness.addon("nodes.under.underwater_fog").NAME]
     scatter_link = next(link for link in group.links if link.from_node.name == "shafts")
     to_socket = scatter_link.to_socket
     out = tempfile.mkdtemp(prefix="water_surface_bench_")

@@ -6,20 +6,19 @@ This package's descriptions (`SPECS`) are plain data and import without Blender;
 
 from . import (
     bump_uv,
-    caustic_light,
     caustics,
     float_fit,
     keep_out,
     ocean,
     sea_fade,
-    surroundings,
     underside,
-    underwater,
     water_surface,
     water_waves,
     wind_frame,
 )
 from .boats import wake
+from .surroundings import surroundings, surroundings_sample
+from .under import caustic_light, caustic_sheet, meniscus, underwater_fog, underwater_shell
 
 SPECS = {
     spec.name: spec
@@ -34,14 +33,14 @@ SPECS = {
         ocean.NORMAL_SPEC,
         ocean.SHADE_SPEC,
         surroundings.SPEC,
-        surroundings.SAMPLE_SPEC,
+        surroundings_sample.SPEC,
         keep_out.SPEC,
         wake.SPEC,
         float_fit.SPEC,
-        underwater.FOG_SPEC,
-        underwater.MENISCUS_SPEC,
-        underwater.SHELL_SPEC,
-        underwater.SHEET_SPEC,
+        underwater_fog.SPEC,
+        meniscus.SPEC,
+        underwater_shell.SPEC,
+        caustic_sheet.SPEC,
         caustic_light.SPEC,
     )
 }

@@ -3,7 +3,7 @@
 A camera 0.8 m under the default lake (caustics 1, wind not along +Y) looks at a white cube
 standing on a white bed 3 m down, lit by a sun 55 degrees high from an azimuth of 40 degrees and
 nothing else (a black world: the sky's light is not patterned in EEVEE). The water's caustic
-light (`nodes/caustic_light.py`) patterns the sunlight on the bed and on the cube's side; each
+light (`nodes/under/caustic_light.py`) patterns the sunlight on the bed and on the cube's side; each
 render with it is divided by one with it hidden, per pixel, and compared with numpy's model over
 the whole lit patch: the light let through where each point's shadow ray crosses the surface is
 `min((1 + k (c - 1)) / (1 + k), 1)` per channel, c the caustic tile as `caustics_map` traces it

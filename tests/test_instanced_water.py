@@ -323,7 +323,7 @@ def test_the_body_is_made_for_every_placement_only_while_the_camera_is_over_no_w
     body, light = underwater.find(water), underwater.find(water, underwater.LIGHT_ROLE)
     modifier = body.modifiers[0]
     fog, placed = (waves.get_wave_input(modifier, name) for name in ("Material", "Placed Material"))
-    fog_name = harness.addon("nodes.underwater").FOG_NAME
+    fog_name = harness.addon("nodes.under.underwater_fog").NAME
     assert placed.node_tree.nodes[fog_name].inputs["Each Placement"].default_value == 1.0
     assert fog.node_tree.nodes[fog_name].inputs["Each Placement"].default_value == 0.0
     lights = [waves.get_wave_input(light.modifiers[0], name) for name in ("Material", "Placed Material")]

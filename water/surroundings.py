@@ -1,6 +1,6 @@
 """What a water sees around it: a collection of objects, measured on a hidden cache object.
 
-The measuring (`Water Surroundings`, `nodes/surroundings.py`) is costly, so it runs
+The measuring (`Water Surroundings`, `nodes/surroundings/surroundings.py`) is costly, so it runs
 on a cache object per water, "<water> Surroundings", and not on the water, whose
 modifier stack is evaluated again on every frame once it has waves. The cache:
 
@@ -44,9 +44,10 @@ import bpy
 from mathutils import Matrix, Vector
 
 from ..nodes import SPECS
-from ..nodes import surroundings as spec
 from ..nodes.builder import ensure_group
 from ..nodes.ownership import is_local, is_original, mark, role_of
+from ..nodes.surroundings import surroundings as spec
+from ..nodes.surroundings import surroundings_sample as sample_spec
 from ..presets import schema
 from . import kind
 from .editable import check_editable
@@ -60,9 +61,9 @@ from .values import is_water
 from .waves import amplitude_sum, input_ids, input_property, set_wave_input, wave_modifier
 
 MODIFIER = spec.NAME  # on the cache
-SAMPLE_MODIFIER = spec.SAMPLE_NAME  # on the water
+SAMPLE_MODIFIER = sample_spec.NAME  # on the water
 INPUT = "Surroundings"
-CACHE_INPUT = spec.CACHE_INPUT
+CACHE_INPUT = sample_spec.CACHE_INPUT
 COLLECTION_ROLE = "Surroundings"
 COLLECTION_VERSION = 1
 CACHE_ROLE = "Surroundings Cache"
@@ -102,7 +103,7 @@ def is_cache(obj):
 
 def surroundings_modifier(water):
     """The water's `Water Surroundings Sample` modifier (reading its cache), or None."""
-    return _nodes_modifier(water, spec.SAMPLE_NAME)
+    return _nodes_modifier(water, sample_spec.NAME)
 
 
 def surroundings_cache(water):
@@ -365,7 +366,7 @@ def _ensure_modifier(water, cache):
     if modifier is None:
         modifier = water.modifiers.new(SAMPLE_MODIFIER, "NODES")
         changes.append(f"added modifier '{modifier.name}'")
-    modifier.node_group = ensure_group(SPECS[spec.SAMPLE_NAME], SPECS)
+    modifier.node_group = ensure_group(SPECS[sample_spec.NAME], SPECS)
     if _input(modifier, CACHE_INPUT) != cache:
         set_wave_input(modifier, CACHE_INPUT, cache)
     return modifier, changes + _place(water, modifier)
@@ -386,7 +387,7 @@ def lost_caches():
         for o in bpy.data.objects
         if o.type == "MESH"
         for m in o.modifiers
-        if m.type == "NODES" and m.node_group is not None and role_of(m.node_group) == spec.SAMPLE_NAME
+        if m.type == "NODES" and m.node_group is not None and role_of(m.node_group) == sample_spec.NAME
     }
     return [
         o for o in bpy.data.objects if is_cache(o) and is_original(o) and o.parent is None and o not in read

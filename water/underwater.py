@@ -2,7 +2,7 @@
 
 `add` gives a water an object `"<water> Underwater"` (parented to it, in its collections) whose
 `Water Underwater Shell` modifier makes the closed body of water under its evaluated surface,
-filled with its own material's `Water Underwater Fog` (`nodes/underwater.py`): light over d metres
+filled with its own material's `Water Underwater Fog` (`nodes/under/`): light over d metres
 keeps `exp(-c d)` and the water's colour fills in the rest, c the water's `Absorption`. The fog's
 two values follow the water's by simple-expression drivers (the lake's Absorption and Scatter
 Color, the ocean's Absorption and Deep Color), so the water looks the same from below as from
@@ -13,7 +13,7 @@ is made only while the camera is within `Margin` of the surface or under it, so 
 never goes under pays nothing. The same modifier draws the waterline across the lens (the `Water
 Meniscus` material, one for every water), its `Near` driven from the scene's camera's Clip Start.
 A second child, `"<water> Caustic Light"`, patterns the sunlight on everything under the water
-while the camera is there (`nodes/caustic_light.py`), and the light shafts too
+while the camera is there (`nodes/under/caustic_light.py`), and the light shafts too
 (`set_light_shafts`: the fog's sunlight scattered towards the eye, off by default). The objects
 and their materials carry `KEY` (the water's name when made) and the add-on's mark: `remove`
 finds them among the water's children, `remove_lost` by their parent gone.
@@ -27,10 +27,11 @@ the camera is over its level; the caustic light likewise, `"<water> Caustic Ligh
 
 import bpy
 
-from ..nodes import SPECS, caustic_light, underwater
+from ..nodes import SPECS
 from ..nodes.builder import ensure_group
 from ..nodes.material import drive_property, drive_socket, new_node_material
 from ..nodes.ownership import is_original, mark, owned, role_of
+from ..nodes.under import caustic_light, caustic_sheet, meniscus, underwater_fog, underwater_shell
 from .editable import check_editable
 from .errors import UnderwaterError
 from .kind import HOLDS_WATER_MATERIAL, LAKE, shading_of, water_material
@@ -45,7 +46,7 @@ ROLE, LIGHT_ROLE = HOLDS_WATER_MATERIAL
 MATERIAL_ROLE = "Underwater Fog"
 # The same with Each Placement on: the body made for every placement (a collection instance's).
 PLACED_ROLE = "Underwater Fog Placed"
-MENISCUS_ROLE = underwater.MENISCUS_NAME  # the one waterline material every water's body shares
+MENISCUS_ROLE = meniscus.NAME  # the one waterline material every water's body shares
 LIGHT_MATERIAL_ROLE = "Caustic Light Material"
 LIGHT_PLACED_ROLE = "Caustic Light Placed"
 _MATERIAL_ROLES = (MATERIAL_ROLE, PLACED_ROLE, LIGHT_MATERIAL_ROLE, LIGHT_PLACED_ROLE)
@@ -109,7 +110,7 @@ def _fog_material(water, material, plain=None):
     name, role = (f"{water.name} Underwater", MATERIAL_ROLE)
     if plain is not None:
         name, role = (f"{name} Placed", PLACED_ROLE)
-    fog, node = _group_material(name, role, underwater.FOG_NAME, "Volume", "Volume")
+    fog, node = _group_material(name, role, underwater_fog.NAME, "Volume", "Volume")
     fog[KEY] = water.name
     far = _FAR_COLOUR.get(shading_of(material), _OCEAN_FAR_COLOUR)
     pairs = (("Absorption", "Absorption"), ("Scatter Color", far), ("Sun Direction", "Sun Direction"))
@@ -137,7 +138,7 @@ def _meniscus_material():
     found = owned(bpy.data.materials, MENISCUS_ROLE)
     if found:
         return found[0]
-    return _group_material(MENISCUS_ROLE, MENISCUS_ROLE, underwater.MENISCUS_NAME, "Shader", "Surface")[0]
+    return _group_material(MENISCUS_ROLE, MENISCUS_ROLE, meniscus.NAME, "Shader", "Surface")[0]
 
 
 def _drive_like(node, material, pairs):
@@ -213,9 +214,9 @@ def _hidden_child(water, material, scene, suffix, role, seen_by, group_name):
 
 def _add_light(water, material, scene):
     """The water's caustic light: a sheet just under its surface that only shadow rays meet, made
-    by `Water Caustic Sheet` while the camera is under the water (`nodes/caustic_light.py`)."""
+    by `Water Caustic Sheet` while the camera is under the water (`nodes/under/caustic_light.py`)."""
     obj, modifier = _hidden_child(
-        water, material, scene, "Caustic Light", LIGHT_ROLE, ("shadow",), underwater.SHEET_NAME
+        water, material, scene, "Caustic Light", LIGHT_ROLE, ("shadow",), caustic_sheet.NAME
     )
     set_wave_input(modifier, "Material", _light_material(water, material))
     _every_placement(modifier, _light_material(water, material, placed=True))
@@ -277,7 +278,7 @@ def add(water, scene=None):
         _claim_samples(water, scene, changes)
     fog = _fog_material(water, material)
     obj, modifier = _hidden_child(
-        water, material, scene or bpy.context.scene, "Underwater", ROLE, ("camera",), underwater.SHELL_NAME
+        water, material, scene or bpy.context.scene, "Underwater", ROLE, ("camera",), underwater_shell.NAME
     )
     set_wave_input(modifier, "Material", fog)
     _every_placement(modifier, _fog_material(water, material, plain=fog))
@@ -312,7 +313,7 @@ def fit_light(water, scene=None):
 
 def _modifier_input(obj, name):
     """The input `name` of `obj`'s shell or sheet modifier, or None."""
-    modifier = obj.modifiers.get(underwater.SHELL_NAME) or obj.modifiers.get(underwater.SHEET_NAME)
+    modifier = obj.modifiers.get(underwater_shell.NAME) or obj.modifiers.get(caustic_sheet.NAME)
     if modifier is None or modifier.type != "NODES" or name not in input_ids(modifier):
         return None
     return get_wave_input(modifier, name)
@@ -322,7 +323,7 @@ def _fit_placed(water, obj, make):
     """A body or caustic light made before `Every Placement` gets its material for every placement
     (`make()`), its group upgraded first: a file from before renders under collection instances
     once the water is worked on again. Returns what it did, in words ([] for one that has it)."""
-    modifier = obj.modifiers.get(underwater.SHELL_NAME) or obj.modifiers.get(underwater.SHEET_NAME)
+    modifier = obj.modifiers.get(underwater_shell.NAME) or obj.modifiers.get(caustic_sheet.NAME)
     if modifier is None or modifier.type != "NODES" or not is_original(obj):
         return []
     if modifier.node_group is not ensure_group(SPECS[modifier.name], SPECS):
@@ -339,11 +340,11 @@ def _fit_placed(water, obj, make):
 def fog_node(water):
     """The `Water Underwater Fog` node of `water`'s body's fog material, or None."""
     body = find(water)
-    modifier = body.modifiers.get(underwater.SHELL_NAME) if body is not None else None
+    modifier = body.modifiers.get(underwater_shell.NAME) if body is not None else None
     fog = get_wave_input(modifier, "Material") if modifier is not None and modifier.type == "NODES" else None
     if fog is None or fog.node_tree is None:
         return None
-    return fog.node_tree.nodes.get(underwater.FOG_NAME)
+    return fog.node_tree.nodes.get(underwater_fog.NAME)
 
 
 def light_shafts(water):
@@ -355,7 +356,7 @@ def light_shafts(water):
 
 def set_light_shafts(water, share):
     """Sets `water`'s `Light Shafts`, clamped to 0..1: the share of its fog's light taken by
-    scattering, not absorption (`nodes/underwater.py`). Returns what it did, in words.
+    scattering, not absorption (`nodes/under/underwater_fog.py`). Returns what it did, in words.
     UnderwaterError (a ValueError) when the water has no underwater body (Underwater off) or its
     fog predates Light Shafts (`apply.apply_values` refuses both first)."""
     check_editable(water)
@@ -379,7 +380,7 @@ def set_light_shafts(water, share):
 
 def _delete(obj, why=""):
     mesh = obj.data
-    modifier = obj.modifiers.get(underwater.SHELL_NAME) or obj.modifiers.get(underwater.SHEET_NAME)
+    modifier = obj.modifiers.get(underwater_shell.NAME) or obj.modifiers.get(caustic_sheet.NAME)
     names = input_ids(modifier) if modifier is not None and modifier.type == "NODES" else {}
     found = [get_wave_input(modifier, name) for name in ("Material", "Placed Material") if name in names]
     fogs = [fog for fog in found if fog is not None and role_of(fog) in _MATERIAL_ROLES]

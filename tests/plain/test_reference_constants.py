@@ -163,6 +163,6 @@ def test_the_caustics_fade_and_the_shafts_phase():
     # docs/BENCHMARKS.md, light shafts: Henyey-Greenstein's g 0.85. Sea water scatters forward:
     # fits to Petzold's measured volume scattering functions give g of about 0.85-0.95 (0.92 for
     # the average particle phase function drawn from them, Mobley, Light and Water, 1994).
-    anisotropy = load("nodes.underwater").SHAFTS_ANISOTROPY
+    anisotropy = load("nodes.under.underwater_fog").SHAFTS_ANISOTROPY
     assert anisotropy == rm.SHAFTS_PHASE_G == 0.85
     assert 0.8 <= anisotropy <= 0.95

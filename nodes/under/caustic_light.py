@@ -2,7 +2,7 @@
 lights everything under the water in moving lines, seen from below (issue 40 point 5).
 
 The shader of a sheet just under the surface that only shadow rays meet (the `Water Caustic
-Sheet` of `underwater.py`, made while the camera is under the water): where a shadow ray from
+Sheet` of `caustic_sheet.py`, made while the camera is under the water): where a shadow ray from
 anything under the water crosses it, the sunlight keeps `T = min(F / (1 + k), 1)` per channel.
 `F = 1 + k (c - 1)` is the caustics group's own factor at this point of the surface (the same
 tile, scrolled with the bump, the same contrast `k` from `Caustics`, the sun, the bed's depth and
@@ -16,12 +16,12 @@ From above, what the water shows below already carries the pattern (the water sh
 so the sheet is made only while the camera is under the water: nothing is patterned twice. A
 sheet made for every placement of the water (`Each Placement` 1: the camera beside the water as
 it stands itself, maybe under a collection instance's placement of it) lets all the sunlight
-through in each placement whose level the camera is over (`underwater.placement_gate`).
+through in each placement whose level the camera is over (`camera_gate.placement_gate`).
 """
 
-from . import bump_uv, caustics
-from .spec import GroupSpec, Node, Socket, group_node, math, pass_inputs, vmath
-from .underwater import EACH_PLACEMENT, placement_gate, placement_links
+from .. import bump_uv, caustics
+from ..spec import GroupSpec, Node, Socket, group_node, math, pass_inputs, vmath
+from .camera_gate import EACH_PLACEMENT, placement_gate, placement_links
 
 NAME = "Water Caustic Light"
 VERSION = 2  # 2: Each Placement (a collection instance's placements, each its own camera gate)
