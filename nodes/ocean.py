@@ -9,8 +9,8 @@ in that direction as the seeds do (the world's environment image, or its colour,
 when it was made) and hands it to `Water Ocean Shade`:
 `F = dot(-eye, n) / 2 + 0.5`, `deep * F + sky * (1 - F) + pow(mean(sky), Glint Power)`,
 unlit, as the seeds draw it. Where the mesh carries crest foam (the open sea's
-`water_whitecaps`, `sea_fade.py`) whitecaps break out as white foam lit by the scene, the foam
-tile breaking them up as it does the shore's foam; past the sea's fade, where the flat far mesh
+`water_whitecaps`, `sea_fade.py`) whitecaps break out as white foam lit by the scene, in
+compact patches metres across drawn out along a strong wind; past the sea's fade, where the flat far mesh
 marks no crests, as many whitecaps are spread over the sea at random, so a gale's foam reaches
 the horizon.
 
@@ -48,24 +48,34 @@ NORMAL_NAME = "Water Ocean Normal"
 SHADE_NAME = "Water Ocean Shade"
 DEEP_BLUE = (0.0, 0.2, 0.4, 1.0)
 WHITECAPS_MAX = 4.0
-# The whitecaps' two reads of the foam tile, metres along and across the wind (its bubbles,
-# `foam_map.py`, are a fifth of the tile down to a thirty-first), drawn out downwind: the coarse
-# read's bubble middles are the whitecaps, metres across; the fine read laces each.
-WHITECAP_BLOB_TILE = (60.0, 30.0)
+# Which water a whitecap covers: round spots, one a cell of WHITECAP_BLOB_TILE metres along and
+# across the wind, at random in it (Voronoi), each of its own size and its edge ragged by the
+# foam tile (`_spots`): compact patches metres across, whole, as a breaking crest's foam is. (A
+# read of the foam tile itself picked its three octaves' bubble middles: rows of dashes a pixel
+# wide, 0.1 m^2 at the median, issue 58.) The foam tile, read at WHITECAP_TILE, laces them.
+WHITECAP_BLOB_TILE = (12.0, 10.0)
 WHITECAP_TILE = (12.0, 6.0)
-# The foam's lace drawn out along the wind by `Foam Streaks` a: its tile (12 a, 6 / a) metres, so
-# its bubbles (cellular noise) become streaks 2 a^2 times longer than wide, and the whitecaps'
-# read by a^0.45. The open sea drives a from its wind (`whitecap_math.streaks`).
+# The foam drawn out along the wind by `Foam Streaks` a: the lace's tile (12 a, 6 / a) metres and
+# the spots' cells a^0.42 longer and narrower, so from Beaufort 7 the whitecaps' foam lies in broad
+# streaks along the wind (a typical piece 5 times as long as wide, 0.5 m or more across). The open
+# sea drives a from its wind (`whitecap_math.streaks`).
 STREAKS_INPUT = "Foam Streaks"
 STREAKS_MAX = 8.0
-BLOB_STRETCH_POWER = 0.45  # the whitecaps' read drawn out a^0.45
+BLOB_STRETCH_POWER = 0.42
 WHITECAP_BLOB_SOFTNESS = 0.01
-WHITECAP_FOAM = 0.9  # f inside a whitecap: the lace covers WHITECAP_FOAM - SOFTNESS / 2 of it
-# The bubbles' share per share of the sea asked: 1 / (crest share x lace cover x how much more
+# f inside a whitecap: over 1 + SOFTNESS / 2 the lace leaves only its darkest few per cent open,
+# so a whitecap stays one patch (a thinner lace split it into specks a pixel wide).
+WHITECAP_FOAM = 1.2
+LACE_COVER = min(1.0, WHITECAP_FOAM - foam_map.SOFTNESS / 2)
+SPOT_RAG = 0.4  # a spot's edge: B (1 + e (R - 1/2)), R the foam tile read 37 by 53 m
+# The crest's mark (1 on the crest, TRAIL_FADE^k k trail steps behind it) raised to MARK_POWER:
+# the foam a crest leaves stays whole, shrinking a little as it ages (`sea_fade.py`).
+MARK_POWER = 0.1
+# The spots' share per share of the sea asked: 1 / (crest share x lace cover x how much more
 # of the sea the crests and the foam they leave behind mark, seen from above), the last measured
-# (tests/test_whitecaps.py: 1.2).
-WHITECAP_SEEN = 1.2
-WHITECAP_BLOB_GAIN = 1.0 / (sea_fade.CREST_SHARE * (WHITECAP_FOAM - foam_map.SOFTNESS / 2) * WHITECAP_SEEN)
+# (tests/test_whitecaps.py).
+WHITECAP_SEEN = 1.59
+WHITECAP_BLOB_GAIN = 1.0 / (sea_fade.CREST_SHARE * LACE_COVER * WHITECAP_SEEN)
 
 
 def _tile_read(key, tile, column, label, interpolation="Linear"):
@@ -76,6 +86,43 @@ def _tile_read(key, tile, column, label, interpolation="Linear"):
         f"{key}_uv": Node("ShaderNodeCombineXYZ", column + 1),
         f"{key}_tile": water_surface.foam_tile(column + 2, label, interpolation),
     }
+
+
+def _spots(key, tile, column, label):
+    """Nodes making an evenly spread value from round spots, one a (along, across) / `tile` cell:
+    Voronoi's nearest-point distance d, as 1 - exp(-pi d^2) (even for points one a cell at
+    random), so `{key}_even < s` covers s of the sea in compact spots. `{key}_even:Value`."""
+    return {
+        f"{key}_u": math("DIVIDE", column, "along / length", b=tile[0]),
+        f"{key}_v": math("DIVIDE", column, "across / width", b=tile[1]),
+        f"{key}_uv": Node("ShaderNodeCombineXYZ", column + 1),
+        f"{key}_tile": Node(
+            "ShaderNodeTexVoronoi",
+            column + 2,
+            {"voronoi_dimensions": "2D", "feature": "F1", "distance": "EUCLIDEAN"},
+            {"Scale": 1.0, "Randomness": 1.0},
+            label=label,
+        ),
+        f"{key}_size": math("MULTIPLY_ADD", column + 3, "its size: 1/2 + the cell's grey", b=1.0, c=0.5),
+        f"{key}_rel": math("DIVIDE", column + 3, "d / size"),
+        f"{key}_sq": math("POWER", column + 3, "d^2", b=2.0),
+        f"{key}_neg": math("MULTIPLY", column + 3, "-pi d^2", b=-3.141592653589793),
+        f"{key}_exp": math("EXPONENT", column + 3, "exp(-pi d^2)"),
+        f"{key}_even": math("SUBTRACT", column + 3, "1 - exp(-pi d^2): even", a=1.0),
+    }
+
+
+def _spot_links(key):
+    return (
+        *_tile_links(key),
+        (f"{key}_tile:Color", f"{key}_size:#0"),
+        (f"{key}_tile:Distance", f"{key}_rel:#0"),
+        (f"{key}_size:Value", f"{key}_rel:#1"),
+        (f"{key}_rel:Value", f"{key}_sq:#0"),
+        (f"{key}_sq:Value", f"{key}_neg:#0"),
+        (f"{key}_neg:Value", f"{key}_exp:#0"),
+        (f"{key}_exp:Value", f"{key}_even:#1"),
+    )
 
 
 def _bubble(label):
@@ -139,7 +186,7 @@ WHITEN = _inverse_square_root(BUMP_SLOPE_COVARIANCE)
 FADE_START_INPUT = "Fade Start"
 FADE_END_INPUT = "Fade End"
 FADE_NEVER = 1.0e6
-FAR_CAP_GAIN = 1.0 / (WHITECAP_FOAM - foam_map.SOFTNESS / 2)
+FAR_CAP_GAIN = 1.0 / LACE_COVER
 # The far bubbles are where either of two reads of the tile, B and B2, is low (min(B, B2) < t,
 # t = 1 - sqrt(1 - share)): one read alone repeats every tile width across the wind, long
 # parallel stripes seen from high up; B2's tile is drawn other ways (along and across the wind,
@@ -715,8 +762,10 @@ FULL_SHADE_SPEC = GroupSpec(
     # as much rougher); past the sea's fade (`Fade Start`, `Fade End`), whitecaps where the mesh
     # marks no crests (the far sea was bare: at 25 m/s a band 40 m up); 13: the far whitecaps from
     # two reads of the tile (one alone repeated across the wind: stripes from high up); 14: the
-    # lace read nearest-texel (a mipmapped read hung software EEVEE on folded crests)
-    version=14,
+    # lace read nearest-texel (a mipmapped read hung software EEVEE on folded crests); 15: whitecaps
+    # are compact spots (Voronoi), whole, drawn out a^0.42 (were the foam tile's bubble middles:
+    # dashes a pixel wide)
+    version=15,
     description="Ocean colour: deep blue and the reflected sky by the ocean Fresnel, plus the glint; "
     "white lit foam on the crests; with the surroundings, the bed seen through shallow water, "
     "shore foam and caustics",
@@ -817,35 +866,36 @@ FULL_SHADE_SPEC = GroupSpec(
         "water_shader": Node("ShaderNodeAddShader", 31, label="unlit + refraction"),
         # Foam: whitecaps or shore foam (the lake's coverage), whichever covers more; white, lit.
         # Whitecaps break on the crests the sea's fade marks (`water_whitecaps`, the Foam input):
-        # there the foam tile, read coarse, picks bubbles B of the share the wind asks for
-        # (the tile is equalised: B < s covers s of it), and inside them the foam tile, read fine,
-        # laces the foam as on the shore, clamp((b + f - 1) / SOFTNESS) with f = WHITECAP_FOAM.
-        # Both reads follow where the water came from (`water_rest`: the foam rides with the
-        # chop), drawn out along the wind.
+        # there spots B (`_spots`: B < s covers s of the sea) of the share the wind asks for, and
+        # inside them the foam tile, read fine, laces the foam as on the shore,
+        # clamp((b + f - 1) / SOFTNESS) with f = WHITECAP_FOAM. Both follow where the water came
+        # from (`water_rest`: the foam rides with the chop), drawn out along the wind.
         "rest": attribute(sea_fade.REST_ATTRIBUTE, 24, "water_rest (where the water came from)"),
         "wind_w": vmath("NORMALIZE", 24, "w"),
         "wind_across": vmath("CROSS_PRODUCT", 25, "z x w: across the wind", a=(0.0, 0.0, 1.0)),
         "cap_along": vmath("DOT_PRODUCT", 26, "along the wind (m)"),
         "cap_across": vmath("DOT_PRODUCT", 26, "across the wind (m)"),
-        # Closest: the tile's values stay evenly spread (blending neighbours would thin out the
-        # darkest few per cent, the shares light winds ask for).
-        **_tile_read("blob", WHITECAP_BLOB_TILE, 27, "foam tile B (which whitecaps)", "Closest"),
-        # Closest too: a mipmapped read of the lace, on a crest folded over in front of the camera,
+        **_spots("blob", WHITECAP_BLOB_TILE, 27, "spots B (which whitecaps)"),
+        # Closest: a mipmapped read of the lace, on a crest folded over in front of the camera,
         # took software EEVEE minutes a frame (issue 57 point 1); the lace is cut sharp by the
         # breakup's threshold anyway.
         **_tile_read("lace", WHITECAP_TILE, 27, "foam tile b (their lace)", "Closest"),
         "lace_length": math("MULTIPLY", 26, "12 a: drawn out along the wind", b=WHITECAP_TILE[0]),
         "lace_width": math("DIVIDE", 26, "6 / a: narrowed across it", a=WHITECAP_TILE[1]),
-        # Which whitecaps, by a^0.45 only: drawn out as far as their lace, one would run for
+        # Which whitecaps, by a^0.42 only: drawn out as far as their lace, one would run for
         # hundreds of metres (over 500 m^2 at 15 m/s).
-        "blob_stretch": math("POWER", 25, "a^0.45", b=BLOB_STRETCH_POWER),
-        "blob_length": math("MULTIPLY", 26, "60 a^0.45: drawn out along the wind", b=WHITECAP_BLOB_TILE[0]),
-        "blob_width": math("DIVIDE", 26, "30 / a^0.45: narrowed across it", a=WHITECAP_BLOB_TILE[1]),
+        "blob_stretch": math("POWER", 25, "a^0.42", b=BLOB_STRETCH_POWER),
+        "blob_length": math("MULTIPLY", 26, "12 a^0.42: drawn out along the wind", b=WHITECAP_BLOB_TILE[0]),
+        "blob_width": math("DIVIDE", 26, "10 / a^0.42: narrowed across it", a=WHITECAP_BLOB_TILE[1]),
         "cap_share": math("MULTIPLY", 27, "Whitecaps x Whitecap Coverage"),
         "blob_share": math("MULTIPLY", 28, "s: bubbles' share", b=WHITECAP_BLOB_GAIN),
+        # Each spot's edge ragged by the tile R, metres-wide wobbles: B (1 + e (R - 1/2)).
+        "blob_rag": math("MULTIPLY_ADD", 28, "1 + e (R - 1/2)", b=SPOT_RAG, c=1.0 - SPOT_RAG / 2),
+        "blob_ragged": math("MULTIPLY", 28, "B ragged"),
         "blob_gap": math("SUBTRACT", 29, "s - B"),
         "blob": _bubble("a whitecap's bubble"),
-        "on_crest": math("MULTIPLY", 31, "on a crest x bubble"),
+        "mark_lift": math("POWER", 30, f"mark^{MARK_POWER:g}: whole where marked", b=MARK_POWER),
+        "mark_share": math("MULTIPLY", 29, "s x mark^g: aged whitecaps shrink"),
         "fade_distance": vmath("LENGTH", 25, "distance from the sea's centre"),
         "fade_near": Node(
             "ShaderNodeMapRange",
@@ -871,7 +921,7 @@ FULL_SHADE_SPEC = GroupSpec(
         "far_cut": math("SUBTRACT", 29, "t = 1 - sqrt(1 - share)", a=1.0),
         "far_length": math("MULTIPLY", 26, "B2's length", b=FAR_SECOND_READ[0]),
         "far_width": math("MULTIPLY", 26, "B2's width", b=FAR_SECOND_READ[1]),
-        **_tile_read("far2", WHITECAP_BLOB_TILE, 27, "foam tile B2 (far whitecaps, second read)", "Closest"),
+        **_spots("far2", WHITECAP_BLOB_TILE, 27, "spots B2 (far whitecaps, second read)"),
         "far_either": math("MINIMUM", 29, "min(B, B2)"),
         "far_gap": math("SUBTRACT", 29, "t - min(B, B2)"),
         "far_blob": _bubble("a far whitecap's bubble"),
@@ -1001,7 +1051,7 @@ FULL_SHADE_SPEC = GroupSpec(
         ("wind_w:Vector", "cap_along:#1"),
         ("rest:Vector", "cap_across:#0"),
         ("wind_across:Vector", "cap_across:#1"),
-        *_tile_links("blob"),
+        *_spot_links("blob"),
         *_tile_links("lace"),
         (f"input:{STREAKS_INPUT}", "lace_length:#0"),
         (f"input:{STREAKS_INPUT}", "lace_width:#1"),
@@ -1015,11 +1065,15 @@ FULL_SHADE_SPEC = GroupSpec(
         ("input:Whitecaps", "cap_share:#0"),
         ("input:Whitecap Coverage", "cap_share:#1"),
         ("cap_share:Value", "blob_share:#0"),
-        ("blob_share:Value", "blob_gap:#0"),
-        ("blob_tile:Color", "blob_gap:#1"),
+        ("mark_share:Value", "blob_gap:#0"),
+        ("pick_tile:Color", "blob_rag:#0"),
+        ("blob_even:Value", "blob_ragged:#1"),
+        ("blob_rag:Value", "blob_ragged:#0"),
+        ("blob_ragged:Value", "blob_gap:#1"),
         ("blob_gap:Value", "blob:Value"),
-        ("crest_whole:Value", "on_crest:#0"),
-        ("blob:Result", "on_crest:#1"),
+        ("crest_whole:Value", "mark_lift:#0"),
+        ("blob_share:Value", "mark_share:#0"),
+        ("mark_lift:Value", "mark_share:#1"),
         ("blob_share:Value", "some:#0"),
         ("rest:Vector", "fade_distance:#0"),
         ("fade_distance:Value", "fade_near:Value"),
@@ -1041,15 +1095,15 @@ FULL_SHADE_SPEC = GroupSpec(
         ("far_root:Value", "far_cut:#1"),
         ("blob_length:Value", "far_length:#0"),
         ("blob_width:Value", "far_width:#0"),
-        *_tile_links("far2"),
+        *_spot_links("far2"),
         ("far_length:Value", "far2_u:#1"),
         ("far_width:Value", "far2_v:#1"),
-        ("blob_tile:Color", "far_either:#0"),
-        ("far2_tile:Color", "far_either:#1"),
+        ("blob_even:Value", "far_either:#0"),
+        ("far2_even:Value", "far_either:#1"),
         ("far_cut:Value", "far_gap:#0"),
         ("far_either:Value", "far_gap:#1"),
         ("far_gap:Value", "far_blob:Value"),
-        ("on_crest:Value", "caps_change:#0"),
+        ("blob:Result", "caps_change:#0"),
         ("far_blob:Result", "caps_change:#1"),
         ("caps_change:Value", "caps:#0"),
         ("crests_here:Value", "caps:#1"),

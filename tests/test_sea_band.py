@@ -33,7 +33,9 @@ WINDS = (5.0, 15.0, 25.0)
 # moment's rows stray 4-9% from the curve, so sixteen, 23 frames apart, bring that under 2%).
 FRAMES = {3.0: tuple(1 + 23 * k for k in range(16)), 12.0: (1, 41), 40.0: (1, 41), 150.0: (1,)}
 GALE = 25.0
-GALE_FRAMES = {3.0: FRAMES[3.0], 12.0: (1, 21, 41, 61), 40.0: (1, 21, 41, 61), 150.0: (1, 81, 161, 241)}
+# In a gale the whitecaps are patches metres across that live a second or two: moments under a
+# second apart see the same ones (12 m up, frames 1-61: rows 4% off the curve), so 2.5 s apart.
+GALE_FRAMES = {3.0: FRAMES[3.0], 12.0: (1, 61, 121, 161), 40.0: (1, 61, 121, 161), 150.0: (1, 81, 161, 241)}
 # Software EEVEE (llvmpipe) renders a few of those moments 5-25 times slower than the rest (issue
 # 57 point 1: the bump's filtered taps, docs/BENCHMARKS.md#gale-frames): at 15 m/s frames 90-94
 # (66-124 s against 6-14 s, each frame in a process of its own, the machine shared), at 25 m/s 47
