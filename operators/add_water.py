@@ -1,4 +1,4 @@
-"""`object.water_surface_add`: one click, a water plane that mirrors and moves."""
+"""`object.water_add`: one click, a water plane that mirrors and moves."""
 
 import bpy
 from bpy_extras import object_utils
@@ -29,10 +29,10 @@ def _apply_preset(self, _context):
             setattr(self, key, values[key])
 
 
-class OBJECT_OT_water_surface_add(object_utils.AddObjectHelper, bpy.types.Operator):
+class OBJECT_OT_water_add(object_utils.AddObjectHelper, bpy.types.Operator):
     """Add a water plane that reflects and refracts the scene, with its mirror set-up"""
 
-    bl_idname = "object.water_surface_add"
+    bl_idname = "object.water_add"
     bl_label = "Water Surface"
     bl_options = {"REGISTER", "UNDO"}
 
@@ -127,4 +127,4 @@ class OBJECT_OT_water_surface_add(object_utils.AddObjectHelper, bpy.types.Operat
         return {"FINISHED"}
 
 
-add_field_properties(OBJECT_OT_water_surface_add, KEYS)
+add_field_properties(OBJECT_OT_water_add, KEYS)

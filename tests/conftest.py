@@ -184,4 +184,4 @@ def addon_disabled_afterwards(addon):
     yield
     bpy.context.preferences.filepaths.use_scripts_auto_execute = True
     addon_utils.enable(harness.ADDON_MODULE, default_set=True)
-    assert hasattr(bpy.types, "OBJECT_OT_water_surface_add")
+    assert hasattr(bpy.types, "OBJECT_OT_water_add")

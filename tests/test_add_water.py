@@ -1,4 +1,4 @@
-"""`object.water_surface_add`, `object.water_mirror_setup`, the preset operators and the panel's data."""
+"""`object.water_add`, `object.water_mirror_setup`, the preset operators and the panel's data."""
 
 import json
 import math
@@ -25,7 +25,7 @@ def _probe(water):
 
 def test_operator_defaults_are_the_reference(addon):
     assert harness.addon("presets").enum_items()[0][0] == "lake", "the first (default) preset is the lake"
-    properties = bpy.ops.object.water_surface_add.get_rna_type().properties
+    properties = bpy.ops.object.water_add.get_rna_type().properties
     for key, value in REFERENCE.items():
         default = properties[key].default_array if getattr(properties[key], "is_array", False) else None
         assert (tuple(default) if default is not None else properties[key].default) == pytest.approx(value), (
@@ -35,7 +35,7 @@ def test_operator_defaults_are_the_reference(addon):
 
 def test_adds_a_uv_mapped_plane_with_the_water_material_at_the_cursor(scene):
     scene.cursor.location = (1.0, 2.0, 3.0)
-    assert bpy.ops.object.water_surface_add() == {"FINISHED"}
+    assert bpy.ops.object.water_add() == {"FINISHED"}
     water = bpy.context.active_object
     assert water.select_get() and water.type == "MESH"
     assert tuple(water.location) == pytest.approx((1.0, 2.0, 3.0))
@@ -50,7 +50,7 @@ def test_adds_a_uv_mapped_plane_with_the_water_material_at_the_cursor(scene):
 
 
 def test_location_rotation_and_values_given_win_over_the_preset_in_any_order(scene):
-    bpy.ops.object.water_surface_add(
+    bpy.ops.object.water_add(
         wave_height=0.7, preset="murky_pond", location=(5, 0, 0), rotation=(0, 0, math.pi / 2)
     )
     water = bpy.context.active_object
@@ -67,7 +67,7 @@ def test_from_edit_mode_it_returns_to_object_mode_and_leaves_the_edited_mesh_alo
     bpy.ops.mesh.primitive_cube_add()
     cube = bpy.context.active_object
     bpy.ops.object.mode_set(mode="EDIT")
-    assert bpy.ops.object.water_surface_add(mirror_setup=False) == {"FINISHED"}
+    assert bpy.ops.object.water_add(mirror_setup=False) == {"FINISHED"}
     assert bpy.context.mode == "OBJECT"
     assert len(cube.data.vertices) == 8
     assert bpy.context.active_object is not cube and bpy.context.active_object.active_material is not None
@@ -75,7 +75,7 @@ def test_from_edit_mode_it_returns_to_object_mode_and_leaves_the_edited_mesh_alo
 
 def test_adding_water_three_times_reuses_the_group_and_the_bump_image(scene):
     for _ in range(3):
-        bpy.ops.object.water_surface_add()
+        bpy.ops.object.water_add()
     waters = [o for o in bpy.data.objects if harness.addon("water.values").is_water(o)]
     assert len(waters) == 3
     assert len({o.active_material.name for o in waters}) == 3, "each water has its own values"
@@ -93,7 +93,7 @@ def test_undo_removes_the_water_and_its_set_up(scene):
     scene.eevee.use_raytracing = False
     bpy.ops.ed.undo_push(message="before water")
     before = {o.name for o in bpy.data.objects}
-    bpy.ops.object.water_surface_add("EXEC_DEFAULT", True)  # with an undo step, as from the menu
+    bpy.ops.object.water_add("EXEC_DEFAULT", True)  # with an undo step, as from the menu
     assert {o.name for o in bpy.data.objects} - before == {
         "Water",
         "Water Mirror",
@@ -121,7 +121,7 @@ BAD_INPUTS = [
 
 @pytest.mark.parametrize("key, given, used", BAD_INPUTS)
 def test_bad_input_is_clamped_never_nan(scene, key, given, used):
-    assert bpy.ops.object.water_surface_add(**{key: given}) == {"FINISHED"}
+    assert bpy.ops.object.water_add(**{key: given}) == {"FINISHED"}
     water = bpy.context.active_object
     value = water.dimensions.x if key == "size" else _values(water)[key]
     assert value == pytest.approx(used, rel=1e-5), key
@@ -137,7 +137,7 @@ def test_mirror_set_up_refuses_without_water(scene):
 def test_mirror_set_up_turns_tracing_on_adds_a_world_and_one_probe_that_follows_the_water(scene):
     scene.world = None
     scene.eevee.use_raytracing = False
-    bpy.ops.object.water_surface_add(size=10, mirror_setup=False)
+    bpy.ops.object.water_add(size=10, mirror_setup=False)
     water = bpy.context.active_object
     assert _probe(water) is None and scene.world is None
     changes = harness.addon("water.mirror").setup_mirror(scene, water)
@@ -173,41 +173,41 @@ def test_add_mesh_menus_offer_the_operator(addon):
 
 
 def test_panel_sections_name_real_group_inputs(addon):
-    panel = harness.addon("ui.panel")
+    lake, common = harness.addon("ui.lake"), harness.addon("ui.common")
     inputs = {s.name for s in harness.addon("nodes.water_surface").INPUTS}
-    for _title, _icon, names in panel._SECTIONS:
+    for _title, _icon, names in lake._SECTIONS:
         for name in names:
             if name.startswith("part:"):
                 part = name[len("part:") :]
                 assert part in {p.name for p in harness.addon("nodes.water_surface").PARTS}
-                assert set(panel._PARTS[part]) <= inputs
+                assert set(common.PARTS[part]) <= inputs
             else:
                 assert name in inputs
 
 
 def test_user_presets_are_saved_outside_the_add_on_applied_and_removed(scene):
     presets = harness.addon("presets")
-    bpy.ops.object.water_surface_add(mirror_setup=False)
+    bpy.ops.object.water_add(mirror_setup=False)
     first = bpy.context.active_object
     node = harness.addon("nodes.material").water_node(first.active_material)
     node.inputs["Wave Height"].default_value = 0.55
     node.inputs["Dull Color"].default_value = (0.9, 0.1, 0.2, 1.0)
-    assert bpy.ops.object.water_surface_preset_add(name="Test Red") == {"FINISHED"}
+    assert bpy.ops.object.water_preset_add(name="Test Red") == {"FINISHED"}
     path = Path(presets.get("user:test_red").path)
     assert path.is_file() and Path(presets.user_dir()) in path.parents
     assert Path(harness.addon().__file__).parent not in path.parents, "never inside the add-on's folder"
     assert "user:test_red" in [item[0] for item in presets.enum_items()]
 
-    bpy.ops.object.water_surface_add(preset="lake", mirror_setup=False)
+    bpy.ops.object.water_add(preset="lake", mirror_setup=False)
     second = bpy.context.active_object
-    bpy.ops.object.water_surface_preset_apply(preset="user:test_red")
+    bpy.ops.object.water_preset_apply(preset="user:test_red")
     assert _values(second)["wave_height"] == pytest.approx(0.55)
     assert _values(second)["dull_color"] == pytest.approx((0.9, 0.1, 0.2))
 
-    bpy.ops.object.water_surface_preset_remove(preset="user:test_red")
+    bpy.ops.object.water_preset_remove(preset="user:test_red")
     assert not path.exists()
     with pytest.raises(RuntimeError, match="built in"):
-        bpy.ops.object.water_surface_preset_remove(preset="lake")
+        bpy.ops.object.water_preset_remove(preset="lake")
 
 
 def test_a_broken_user_preset_leaves_the_add_on_working(scene, capfd):
@@ -224,7 +224,7 @@ def test_a_broken_user_preset_leaves_the_add_on_working(scene, capfd):
         assert "broken.json" in console and "ill_typed.json" in console
         ids = [item[0] for item in harness.addon("presets").enum_items()]
         assert "user:broken" not in ids and "user:ill_typed" not in ids and "lake" in ids
-        assert bpy.ops.object.water_surface_add(mirror_setup=False) == {"FINISHED"}
+        assert bpy.ops.object.water_add(mirror_setup=False) == {"FINISHED"}
         assert _values(bpy.context.active_object)["wave_height"] == pytest.approx(0.3)
     finally:
         broken.unlink()
@@ -236,33 +236,33 @@ def test_glint_sun_and_bump_image_are_chosen_by_operators(scene):
     material_module = harness.addon("nodes.material")
     sun = bpy.data.objects.new("Key Sun", bpy.data.lights.new("Key Sun", "SUN"))
     scene.collection.objects.link(sun)
-    bpy.ops.object.water_surface_add(mirror_setup=False)
+    bpy.ops.object.water_add(mirror_setup=False)
     water = bpy.context.active_object
     assert material_module.glint_sun(water.active_material) is sun
-    bpy.ops.object.water_surface_sun_set(sun="NONE")
+    bpy.ops.object.water_sun_set(sun="NONE")
     assert material_module.glint_sun(water.active_material) is None
     image = bpy.data.images.new("Ripples", 8, 8)
-    bpy.ops.object.water_surface_bump_set(image="Ripples")
+    bpy.ops.object.water_bump_set(image="Ripples")
     assert material_module.bump_image(water.active_material) == image
-    bpy.ops.object.water_surface_bump_set(image="DEFAULT")
+    bpy.ops.object.water_bump_set(image="DEFAULT")
     assert material_module.bump_image(water.active_material).name == "Water Surface Bump"
 
 
 def test_lake_only_choices_refuse_ocean_water_with_a_message(scene):
-    bpy.ops.object.water_surface_add(preset="ocean", resolution=3, size=10)
+    bpy.ops.object.water_add(preset="ocean", resolution=3, size=10)
     with pytest.raises(RuntimeError, match="ocean shading"):
-        bpy.ops.object.water_surface_sun_set(sun="NONE")
+        bpy.ops.object.water_sun_set(sun="NONE")
     with pytest.raises(RuntimeError, match="ocean shading"):
-        bpy.ops.object.water_surface_preset_apply(preset="lake")
-    bpy.ops.object.water_surface_add(preset="lake", mirror_setup=False)
+        bpy.ops.object.water_preset_apply(preset="lake")
+    bpy.ops.object.water_add(preset="lake", mirror_setup=False)
     with pytest.raises(RuntimeError, match="builds its own mesh"):
-        bpy.ops.object.water_surface_preset_apply(preset="ocean")
+        bpy.ops.object.water_preset_apply(preset="ocean")
 
 
 def test_probe_stays_on_the_rest_plane_with_waves_at_any_frame(scene):
     """Add Waves and `waves=True` fit the probe to the rest plane and widen it to the crests, at any frame."""
     waves = harness.addon("water.waves")
-    bpy.ops.object.water_surface_add(size=40, resolution=64)
+    bpy.ops.object.water_add(size=40, resolution=64)
     water = bpy.context.active_object
     probe = _probe(water)
     assert probe.data.influence_distance < 0.5  # still water: a thin influence
@@ -286,7 +286,7 @@ def test_probe_stays_on_the_rest_plane_with_waves_at_any_frame(scene):
     assert max(abs(a - b) for row_a, row_b in zip(first, later) for a, b in zip(row_a, row_b)) < 1e-6
     assert fitted[1][1] == fitted[40][1]
     # Added with waves from the start: the same probe.
-    bpy.ops.object.water_surface_add(size=40, resolution=64, waves=True, location=(100, 0, 0))
+    bpy.ops.object.water_add(size=40, resolution=64, waves=True, location=(100, 0, 0))
     other = _probe(bpy.context.active_object)
     assert other.matrix_world.translation.z == pytest.approx(0.01, abs=1e-5)
     assert other.data.influence_distance == pytest.approx(fitted[1][1])

@@ -27,7 +27,7 @@ def test_bad_input_still_renders_lit_water(view, render, key, given, used):
     scene, camera = view
     for obj in [o for o in scene.objects if o.type != "CAMERA"]:
         bpy.data.objects.remove(obj)
-    bpy.ops.object.water_surface_add(location=(0, 2, 0), **{key: given})
+    bpy.ops.object.water_add(location=(0, 2, 0), **{key: given})
     water = bpy.context.active_object
     pixels = render(scene, f"{key}-{given}", exr=True)
     assert np.isfinite(pixels).all()

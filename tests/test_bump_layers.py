@@ -40,9 +40,7 @@ def patch(addon, eevee):
     scene = harness.clean_scene(engine=eevee, width=PIXELS, height=PIXELS, samples=1)
     scene.render.filter_size = 0.0
     scene.render.fps, scene.render.fps_base = FPS, 1.0
-    bpy.ops.object.water_surface_add(
-        size=SIZE, wind_direction=WIND, wind_force=WIND_FORCE, mirror_setup=False
-    )
+    bpy.ops.object.water_add(size=SIZE, wind_direction=WIND, wind_force=WIND_FORCE, mirror_setup=False)
     water = bpy.context.object
     camera = harness.add_camera(scene, (CENTRE[0], CENTRE[1], 2.0), (CENTRE[0], CENTRE[1], 0.0))
     camera.data.type = "ORTHO"

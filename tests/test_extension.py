@@ -105,6 +105,6 @@ def test_disable_enable_cycles_leave_nothing_behind(addon):
     # Still works: the panel is back and the operator adds water with its mirror set-up.
     assert hasattr(bpy.types, "VIEW3D_PT_water_surface")
     harness.clean_scene()
-    assert bpy.ops.object.water_surface_add() == {"FINISHED"}
+    assert bpy.ops.object.water_add() == {"FINISHED"}
     assert harness.addon("water.values").is_water(bpy.context.active_object)
     assert harness.addon("water.mirror").find_probe(bpy.context.active_object) is not None

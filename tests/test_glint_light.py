@@ -64,7 +64,7 @@ def lake(addon, eevee):
     # of times the glint on it (on the default lake's ripples it is spread out and dimmer).
     # Without surroundings: the glint does not depend on them, and the 513 x 513 grid they would
     # give this lake over its floor made each of these tests three times slower.
-    bpy.ops.object.water_surface_add(preset="calm_mirror", see_surroundings=False)
+    bpy.ops.object.water_add(preset="calm_mirror", see_surroundings=False)
     water = bpy.context.object
     # A diffuse white block, lit by the sun.
     block = harness.add_cube(scene, (-2.0, 8.0, 0.75), size=1.5, name="Block")
@@ -206,7 +206,7 @@ def test_mirror_set_up_reports_the_light_it_changed_and_undo_restores_it(scene):
     sun = bpy.data.objects.new("Sun", bpy.data.lights.new("Sun", "SUN"))
     scene.collection.objects.link(sun)
     bpy.ops.ed.undo_push(message="sun")
-    assert bpy.ops.object.water_surface_add("EXEC_DEFAULT", True, size=8.0) == {"FINISHED"}
+    assert bpy.ops.object.water_add("EXEC_DEFAULT", True, size=8.0) == {"FINISHED"}
     water = bpy.context.object
     collection = sun.light_linking.receiver_collection
     assert collection is not None and water.name in collection.objects

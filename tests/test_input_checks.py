@@ -128,14 +128,14 @@ def test_the_remove_operator_reports_a_vanished_file_and_refreshes_the_list(pres
     presets.save_user_preset("Stays Test", {"wave_height": 0.5})
     (user_folder / "vanish_op_test.json").unlink()
     with pytest.raises(RuntimeError) as raised:  # Blender raises an operator's ERROR report
-        bpy.ops.object.water_surface_preset_remove(preset="user:vanish_op_test")
+        bpy.ops.object.water_preset_remove(preset="user:vanish_op_test")
     message = str(raised.value).strip()
     assert "FileNotFoundError" not in message and "Traceback" not in message
     assert "'Vanish Op Test'" in message and "gone already" in message and "no longer listed" in message
     assert len(message.splitlines()) == 1, message
     ids = [item[0] for item in presets.enum_items()]
     assert "user:vanish_op_test" not in ids and "user:stays_test" in ids
-    assert bpy.ops.object.water_surface_preset_remove(preset="user:stays_test") == {"FINISHED"}
+    assert bpy.ops.object.water_preset_remove(preset="user:stays_test") == {"FINISHED"}
     assert not (user_folder / "stays_test.json").exists()
     assert "user:stays_test" not in [p.id for p in presets.all_presets()]
 

@@ -66,9 +66,9 @@ def test_the_operators_and_the_api_refuse_the_same_things(waters):
         _activate(water)
         allowed = table[name]
         assert bpy.ops.object.water_physical_caustics.poll() == ("physical_caustics" in allowed)
-        assert bpy.ops.object.water_surface_preset_apply.poll() == ("presets" in allowed)
-        assert bpy.ops.object.water_surface_sun_set.poll() == ("sun_choice" in allowed)
-        assert bpy.ops.object.water_surface_bump_set.poll() == ("bump_choice" in allowed)
+        assert bpy.ops.object.water_preset_apply.poll() == ("presets" in allowed)
+        assert bpy.ops.object.water_sun_set.poll() == ("sun_choice" in allowed)
+        assert bpy.ops.object.water_bump_set.poll() == ("bump_choice" in allowed)
         assert bpy.ops.object.water_surroundings_set.poll() and bpy.ops.object.water_remove.poll()
         if "presets" not in allowed:
             # The API used to write an ocean's shared keys where the operator refused: now both refuse.
@@ -81,7 +81,7 @@ def test_the_operators_and_the_api_refuse_the_same_things(waters):
         _api().apply_preset(waters["lake"], "open_sea")
     _activate(waters["lake"])
     with pytest.raises(RuntimeError, match="builds its own mesh"):
-        bpy.ops.object.water_surface_preset_apply(preset="ocean")
+        bpy.ops.object.water_preset_apply(preset="ocean")
 
 
 def test_a_value_enters_once_checked_and_clamped(scene):
@@ -97,7 +97,7 @@ def test_a_value_enters_once_checked_and_clamped(scene):
 
 def test_the_add_operator_has_a_property_for_every_preset_key_with_its_range(scene):
     schema = harness.addon("presets.schema")
-    properties = bpy.ops.object.water_surface_add.get_rna_type().properties
+    properties = bpy.ops.object.water_add.get_rna_type().properties
     for field in schema.FIELDS:
         prop = properties[field.key]
         assert prop.name == field.label and prop.description == field.tooltip

@@ -85,9 +85,9 @@ def test_every_entry_point_switches_the_parts_and_keeps_the_values(scene):
     assert _parts(lake) == EVERY
     _api().apply_preset(lake, "murky_pond")  # absorption, no foam, no caustics
     assert _parts(lake) == {"depth"}
-    assert bpy.ops.object.water_surface_preset_apply(preset="tropical_shallows") == {"FINISHED"}
+    assert bpy.ops.object.water_preset_apply(preset="tropical_shallows") == {"FINISHED"}
     assert _parts(lake) == EVERY
-    assert bpy.ops.object.water_surface_preset_apply(preset="lake") == {"FINISHED"}
+    assert bpy.ops.object.water_preset_apply(preset="lake") == {"FINISHED"}
     assert _parts(lake) == set()
 
     # The part switch: on from 0 takes the part's usual value; off sets 0.

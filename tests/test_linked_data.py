@@ -20,7 +20,7 @@ def library(scene, tmp_path):
     collection = bpy.data.collections.new("Lib Stuff")
     scene.collection.children.link(collection)
     collection.objects.link(sun)
-    assert bpy.ops.object.water_surface_add(mirror_setup=False, resolution=8, waves=True) == {"FINISHED"}
+    assert bpy.ops.object.water_add(mirror_setup=False, resolution=8, waves=True) == {"FINISHED"}
     node = harness.addon("nodes.material").water_node(bpy.context.active_object.active_material)
     node.inputs["Wave Height"].default_value = 0.7
     path = tmp_path / "library.blend"
@@ -68,10 +68,10 @@ def _state(water):
 WATER_OPERATORS = [
     ("water_mirror_setup", {}),
     ("water_waves_add", {}),
-    ("water_surface_sun_set", {"sun": "NONE"}),
-    ("water_surface_bump_set", {"image": "DEFAULT"}),
-    ("water_surface_preset_apply", {"preset": "calm_mirror"}),
-    ("water_surface_repair", {}),
+    ("water_sun_set", {"sun": "NONE"}),
+    ("water_bump_set", {"image": "DEFAULT"}),
+    ("water_preset_apply", {"preset": "calm_mirror"}),
+    ("water_repair", {}),
 ]
 
 
@@ -84,8 +84,8 @@ def _assert_all_refused(water, message):
         assert operator.poll() is False, name
         with pytest.raises(RuntimeError, match=re.escape(f"bpy.ops.object.{name}.poll()")) as error:
             operator(**args)
-        owner = "Material 'Water'" if name == "water_surface_repair" else "Object 'Water'"
-        expected = f"{owner} {LINKED if name == 'water_surface_repair' else message}"
+        owner = "Material 'Water'" if name == "water_repair" else "Object 'Water'"
+        expected = f"{owner} {LINKED if name == 'water_repair' else message}"
         assert expected in str(error.value), (name, str(error.value))
     assert _state(water) == before, "nothing linked was edited"
     assert _state(water)["values"]["wave_height"] == pytest.approx(0.7)
@@ -104,7 +104,7 @@ def test_linked_water_is_refused_by_every_operator_and_left_as_it_was(library):
     with pytest.raises(editable.NotEditableError, match="Material 'Water' is linked"):
         editable.check_editable(None, water.active_material)
     # Reading it is no edit: its values may still be saved as a preset.
-    assert bpy.ops.object.water_surface_preset_add.poll()
+    assert bpy.ops.object.water_preset_add.poll()
     log = draw_panel()
     assert any(entry[0] == "label" and LINKED in entry[1] for entry in log)
 
@@ -120,33 +120,33 @@ def test_an_overridden_water_is_refused_too(library):
 
 def test_a_linked_sun_is_refused_as_the_glint_sun(scene, library):
     material_module = harness.addon("nodes.material")
-    assert bpy.ops.object.water_surface_add(mirror_setup=False) == {"FINISHED"}
+    assert bpy.ops.object.water_add(mirror_setup=False) == {"FINISHED"}
     water = bpy.context.active_object
     sun = _link(library, objects=["Lib Sun"])["objects"][0]
     bpy.context.scene.collection.objects.link(sun)
-    assert bpy.ops.object.water_surface_sun_set.poll(), "the water itself is local"
+    assert bpy.ops.object.water_sun_set.poll(), "the water itself is local"
     with pytest.raises(RuntimeError, match=re.escape(f"Object 'Lib Sun' {LINKED}")):
-        bpy.ops.object.water_surface_sun_set(sun="Lib Sun")
+        bpy.ops.object.water_sun_set(sun="Lib Sun")
     assert material_module.glint_sun(water.active_material) is None
     assert sun.light_linking.receiver_collection is None
-    assert bpy.ops.object.water_surface_sun_set(sun="NONE") == {"FINISHED"}
+    assert bpy.ops.object.water_sun_set(sun="NONE") == {"FINISHED"}
 
 
 def test_adding_water_into_a_linked_collection_or_scene_is_refused(library):
     linked = _link(library, collections=["Lib Stuff"], scenes=["Scene"])
     collection, lib_scene = linked["collections"][0], linked["scenes"][0]
     scene = bpy.context.scene
-    assert bpy.ops.object.water_surface_add.poll()
+    assert bpy.ops.object.water_add.poll()
     scene.collection.children.link(collection)
     layer = bpy.context.view_layer.layer_collection.children[collection.name]
     bpy.context.view_layer.active_layer_collection = layer
-    assert not bpy.ops.object.water_surface_add.poll()
+    assert not bpy.ops.object.water_add.poll()
     before = set(bpy.data.objects)
     with pytest.raises(RuntimeError, match=re.escape(f"Collection 'Lib Stuff' {LINKED}")):
-        bpy.ops.object.water_surface_add()
+        bpy.ops.object.water_add()
     assert set(bpy.data.objects) == before and len(collection.objects) == 1
     with bpy.context.temp_override(scene=lib_scene):
-        assert not bpy.ops.object.water_surface_add.poll()
+        assert not bpy.ops.object.water_add.poll()
         with pytest.raises(RuntimeError, match=re.escape(f"Scene 'Scene' {LINKED}")):
-            bpy.ops.object.water_surface_add()
+            bpy.ops.object.water_add()
     assert set(bpy.data.objects) == before

@@ -1,6 +1,6 @@
 """What an artist sees after one click: the water mirrors, shows what is under it, and glints.
 
-One scene for the module, made with `object.water_surface_add` (mirror set-up
+One scene for the module, made with `object.water_add` (mirror set-up
 on), rendered small. The water is a still mirror (Wave Height, Bump Strength,
 Dull Blend 0) so that every pixel can be predicted.
 """
@@ -40,7 +40,7 @@ def pond(addon, eevee):
     sun = bpy.data.objects.new("Sun", bpy.data.lights.new("Sun", "SUN"))
     sun.data.energy = 0.0  # only the group's glint, not the lamp's own highlight
     scene.collection.objects.link(sun)
-    bpy.ops.object.water_surface_add(size=40.0, location=(0, 0, 0), **STILL)
+    bpy.ops.object.water_add(size=40.0, location=(0, 0, 0), **STILL)
     water = bpy.context.object
     objects = {
         "red": _glow("Red", RED, (0, 6, 1), 1.0),  # above the water, in view

@@ -30,7 +30,7 @@ def sea(addon, eevee):
     # samples, 11 s at 1); the model is per pixel centre and holds within 0.01 either way.
     scene = harness.clean_scene(engine=eevee, width=128, height=72, samples=1)
     harness.set_world_color(scene, SKY)
-    bpy.ops.object.water_surface_add(preset="ocean", size=80, resolution=161)
+    bpy.ops.object.water_add(preset="ocean", size=80, resolution=161)
     ocean = bpy.context.active_object
     normal, _shade = harness.addon("nodes.ocean_material").ocean_nodes(ocean.active_material)
     normal.inputs["Bump Strength"].default_value = 0.0
@@ -190,7 +190,7 @@ def bright_sea(addon, eevee):
     # samples, 11 s at 1); the model is per pixel centre and holds within 0.01 either way.
     scene = harness.clean_scene(engine=eevee, width=128, height=72, samples=1)
     sky = _bright_sky_world(scene)  # first: the ocean material takes the world's image when made
-    bpy.ops.object.water_surface_add(preset="ocean", size=OCEAN_SIZE, resolution=241)
+    bpy.ops.object.water_add(preset="ocean", size=OCEAN_SIZE, resolution=241)
     ocean = bpy.context.active_object
     normal, shade = harness.addon("nodes.ocean_material").ocean_nodes(ocean.active_material)
     shade.inputs["Traced Sky"].default_value = 0.0  # the seeds' own look-up of their sky, and its glint

@@ -74,7 +74,7 @@ def test_a_preset_gives_the_same_water_from_every_entry_point(scene):
     assert expected["shader"] == "Water Surface + Depth + Foam + Caustics"
 
     bpy.context.scene.cursor.location = (10.0, 0.0, 0.0)
-    assert bpy.ops.object.water_surface_add(
+    assert bpy.ops.object.water_add(
         preset="clear_lake", size=4.0, mirror_setup=False, see_surroundings=False
     ) == {"FINISHED"}
     operator_added = bpy.context.active_object
@@ -85,7 +85,7 @@ def test_a_preset_gives_the_same_water_from_every_entry_point(scene):
     _api().write_values(written, _preset_values("clear_lake"))
     by_operator = _lake(scene, "By Operator", 40.0)
     _activate(by_operator)
-    assert bpy.ops.object.water_surface_preset_apply(preset="clear_lake") == {"FINISHED"}
+    assert bpy.ops.object.water_preset_apply(preset="clear_lake") == {"FINISHED"}
 
     for water in (operator_added, by_api, written, by_operator):
         assert _state(water) == expected, water.name
@@ -101,7 +101,7 @@ def test_a_lake_preset_on_a_clear_lake_water_takes_its_caustic_light_away(scene)
             _api().apply_preset(water, "lake")
         else:
             _activate(water)
-            assert bpy.ops.object.water_surface_preset_apply(preset="lake") == {"FINISHED"}
+            assert bpy.ops.object.water_preset_apply(preset="lake") == {"FINISHED"}
         state = _state(water)
         assert state["values"]["caustics"] == 0.0
         assert not state["caustic light"], how
@@ -152,7 +152,7 @@ def test_read_values_has_every_key_and_a_saved_preset_restores_the_water(scene):
 
     _activate(water)
     try:
-        assert bpy.ops.object.water_surface_preset_add(name="One Path") == {"FINISHED"}
+        assert bpy.ops.object.water_preset_add(name="One Path") == {"FINISHED"}
         saved = presets.get("user:one_path").values
         assert saved["light_shafts"] == pytest.approx(0.25) and saved["underwater"] is True
         other = _lake(scene, "Other", 10.0)
@@ -160,9 +160,9 @@ def test_read_values_has_every_key_and_a_saved_preset_restores_the_water(scene):
         assert _state(other) == _state(water)
 
         _api().set_underwater(water, False)
-        assert bpy.ops.object.water_surface_preset_add(name="One Path", replace=True) == {"FINISHED"}
+        assert bpy.ops.object.water_preset_add(name="One Path", replace=True) == {"FINISHED"}
         _activate(other)
-        assert bpy.ops.object.water_surface_preset_apply(preset="user:one_path") == {"FINISHED"}
+        assert bpy.ops.object.water_preset_apply(preset="user:one_path") == {"FINISHED"}
         assert _state(other) == _state(water) and not _state(other)["body"]
     finally:
         presets.remove_user_preset("user:one_path")
@@ -190,7 +190,7 @@ def test_nan_wrong_types_and_a_scene_by_name_are_refused_before_anything_changes
         _api().set_underwater(water, False, scene=scene.name)
     assert _state(water) == before and scene.eevee.volumetric_samples == 256, "the body and samples kept"
     with pytest.raises(RuntimeError, match="'wave_height' must be finite"):
-        bpy.ops.object.water_surface_add(wave_height=math.nan)
+        bpy.ops.object.water_add(wave_height=math.nan)
     assert {o.name for o in bpy.data.objects} == names, "nothing was added"
 
 

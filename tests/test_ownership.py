@@ -148,7 +148,7 @@ def test_a_failed_add_leaves_nothing_behind_and_says_why_in_one_line(scene):
     assert scene.world is None and scene.render.engine == engine
     # The operator reports the same line and cancels.
     with pytest.raises(RuntimeError, match="nothing was added"):
-        bpy.ops.object.water_surface_add(size=8, resolution=8, waves=True)
+        bpy.ops.object.water_add(size=8, resolution=8, waves=True)
     assert _snapshot() == before
 
 
@@ -263,7 +263,7 @@ def _describe(water):
 
 def test_operator_cli_and_api_give_the_same_water(scene, tmp_path):
     values = {"preset": "windy_river", "size": 12.0, "resolution": 16, "wave_height": 0.4, "waves": True}
-    bpy.ops.object.water_surface_add(**values)
+    bpy.ops.object.water_add(**values)
     from_operator = _describe(bpy.context.active_object)
     harness.clean_scene()
     from_api = _describe(_api().add_water(bpy.context.scene, **values).object)

@@ -3,7 +3,7 @@ water selected, the boat tools (Float on Water, Keep Water Out, the wake's butto
 object is active, the water too, as the README's "select the objects (and, if you like, the
 water)" says; their operators act on those objects and on the selected or active water.
 
-The panel's choice is `ui.panel.boat_tools_for`, and its own `draw` (run through test_repair's
+The panel's choice is `ui.boats.boat_tools_for`, and its own `draw` (run through test_repair's
 recording layout) draws what that says; the operators run on the real selection."""
 
 import bpy
@@ -22,8 +22,8 @@ BOAT_OPERATORS = (
 )
 
 
-def _panel():
-    return harness.addon("ui.panel")
+def _boats_ui():
+    return harness.addon("ui.boats")
 
 
 def _select(objects, active):
@@ -49,7 +49,7 @@ def lake_and_boat(scene):
 def test_with_the_water_active_and_a_boat_selected_the_boat_tools_show_and_float_it(lake_and_boat):
     lake, boat = lake_and_boat
     _select((boat, lake), active=lake)
-    assert _panel().boat_tools_for(bpy.context) == (("floating", "keep_out", "wake"), boat)
+    assert _boats_ui().boat_tools_for(bpy.context) == (("floating", "keep_out", "wake"), boat)
     log = draw_panel()
     assert "object.water_remove" in _operators(log), "the water's own settings still show"
     assert set(BOAT_OPERATORS) <= _operators(log)
@@ -68,17 +68,17 @@ def test_with_the_water_active_and_a_boat_selected_the_boat_tools_show_and_float
 def test_the_water_alone_shows_no_boat_tools_and_any_other_object_all_of_them(lake_and_boat, scene):
     lake, boat = lake_and_boat
     _select((lake,), active=lake)
-    assert _panel().boat_tools_for(bpy.context) == ((), None)
+    assert _boats_ui().boat_tools_for(bpy.context) == ((), None)
     assert not set(BOAT_OPERATORS) & _operators(draw_panel())
     _select((boat, lake), active=boat)  # the boat active: as before, every box, for it
-    assert _panel().boat_tools_for(bpy.context) == (("floating", "keep_out", "wake"), boat)
+    assert _boats_ui().boat_tools_for(bpy.context) == (("floating", "keep_out", "wake"), boat)
     _select((), active=boat)
     log = draw_panel()
-    assert {"object.water_surface_add", "object.water_float", "object.water_keep_out"} <= _operators(log)
+    assert {"object.water_add", "object.water_float", "object.water_keep_out"} <= _operators(log)
     # Several boats with the water active: the first by name speaks for them.
     dinghy = harness.add_cube(scene, (2.0, 0.0, 0.2), size=0.4, name="Dinghy")
     _select((boat, dinghy, lake), active=lake)
-    assert _panel().boat_tools_for(bpy.context) == (("floating", "keep_out", "wake"), boat)
+    assert _boats_ui().boat_tools_for(bpy.context) == (("floating", "keep_out", "wake"), boat)
 
 
 def test_the_active_water_is_the_one_acted_on_even_unselected(scene):
@@ -95,7 +95,7 @@ def test_the_active_water_is_the_one_acted_on_even_unselected(scene):
     assert floating.water_for(boat, scene, LookupError) == upper, "the water straight below"
     _select((boat,), active=lower)
     assert not lower.select_get() and bpy.context.active_object == lower
-    assert _panel().boat_tools_for(bpy.context) == (("floating", "keep_out", "wake"), boat)
+    assert _boats_ui().boat_tools_for(bpy.context) == (("floating", "keep_out", "wake"), boat)
     assert bpy.ops.object.water_float(wake=False) == {"FINISHED"}
     assert floating.floating_on(boat) == lower
     assert bpy.ops.object.water_keep_out() == {"FINISHED"}

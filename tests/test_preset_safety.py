@@ -274,22 +274,22 @@ def test_saving_an_existing_name_needs_overwrite(store, tmp_path):
 
 def test_the_save_operator_refuses_a_clash_unless_replace_is_ticked(scene):
     presets = harness.addon("presets")
-    replace = bpy.ops.object.water_surface_preset_add.get_rna_type().properties["replace"]
+    replace = bpy.ops.object.water_preset_add.get_rna_type().properties["replace"]
     assert replace.name == "Replace Existing" and replace.default is False
-    bpy.ops.object.water_surface_add(mirror_setup=False)
+    bpy.ops.object.water_add(mirror_setup=False)
     node = harness.addon("nodes.material").water_node(bpy.context.active_object.active_material)
     node.inputs["Wave Height"].default_value = 0.55
     path = Path(presets.user_dir()) / "clash_test.json"
     assert not path.exists()
     try:
-        assert bpy.ops.object.water_surface_preset_add(name="Clash Test") == {"FINISHED"}
+        assert bpy.ops.object.water_preset_add(name="Clash Test") == {"FINISHED"}
         first = path.read_bytes()
         node.inputs["Wave Height"].default_value = 0.75
         with pytest.raises(RuntimeError, match="tick Replace Existing or pick another name"):
-            bpy.ops.object.water_surface_preset_add(name="Clash Test", replace=False)
+            bpy.ops.object.water_preset_add(name="Clash Test", replace=False)
         assert path.read_bytes() == first
         assert presets.get("user:clash_test").values["wave_height"] == pytest.approx(0.55)
-        assert bpy.ops.object.water_surface_preset_add(name="Clash Test", replace=True) == {"FINISHED"}
+        assert bpy.ops.object.water_preset_add(name="Clash Test", replace=True) == {"FINISHED"}
         assert presets.get("user:clash_test").values["wave_height"] == pytest.approx(0.75)
         with pytest.raises(presets.PresetError, match="already exists"):
             presets.save_user_preset("Clash Test", {"wave_height": 0.1})

@@ -36,16 +36,14 @@ def shot(addon, eevee, tmp_path_factory):
     # still moves between frames 1 and 13.
     scene = harness.clean_scene(engine=eevee, width=64, height=36, samples=1)
     harness.set_world_color(scene, (0.35, 0.5, 0.8))
-    bpy.ops.object.water_surface_add(size=12.0, location=(-7, 0, 0))
-    bpy.ops.object.water_surface_add(
-        size=12.0, resolution=48, waves=True, wave_length=1.0, location=(6, 0, 0)
-    )
-    bpy.ops.object.water_surface_add(preset="ocean", size=40.0, resolution=64, location=(0, 30, -1))
+    bpy.ops.object.water_add(size=12.0, location=(-7, 0, 0))
+    bpy.ops.object.water_add(size=12.0, resolution=48, waves=True, wave_length=1.0, location=(6, 0, 0))
+    bpy.ops.object.water_add(preset="ocean", size=40.0, resolution=64, location=(0, 30, -1))
     # A shore in front: the bed rises through the surface, so the water gathers it, with foam.
     bed = bpy.data.meshes.new("Bed")
     bed.from_pydata([(-3, -13, -1.0), (3, -13, 0.5), (3, -7, 0.5), (-3, -7, -1.0)], [], [(0, 1, 2, 3)])
     scene.collection.objects.link(bpy.data.objects.new("Bed", bed))
-    bpy.ops.object.water_surface_add(preset="tropical_shallows", size=6.0, location=(0, -10, 0))
+    bpy.ops.object.water_add(preset="tropical_shallows", size=6.0, location=(0, -10, 0))
     shore = bpy.context.active_object
     assert harness.addon("water.surroundings").surroundings_cache(shore) is not None
     harness.add_camera(scene, (0, -16, 7), (0, 4, 0))

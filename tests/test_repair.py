@@ -72,7 +72,7 @@ def _props(log):
 def _lake(wave_height=0.7):
     sun = bpy.data.objects.new("Key Sun", bpy.data.lights.new("Key Sun", "SUN"))
     bpy.context.scene.collection.objects.link(sun)
-    assert bpy.ops.object.water_surface_add(mirror_setup=False) == {"FINISHED"}
+    assert bpy.ops.object.water_add(mirror_setup=False) == {"FINISHED"}
     water = bpy.context.active_object
     material = water.active_material
     node = harness.addon("nodes.material").water_node(material)
@@ -92,9 +92,9 @@ def _expected_inputs():
 def _refused_until_repaired():
     """Every lake operator refuses the broken water with a message that says to repair it."""
     calls = [
-        (bpy.ops.object.water_surface_preset_apply, {"preset": "calm_mirror"}),
-        (bpy.ops.object.water_surface_sun_set, {"sun": "NONE"}),
-        (bpy.ops.object.water_surface_bump_set, {"image": "DEFAULT"}),
+        (bpy.ops.object.water_preset_apply, {"preset": "calm_mirror"}),
+        (bpy.ops.object.water_sun_set, {"sun": "NONE"}),
+        (bpy.ops.object.water_bump_set, {"image": "DEFAULT"}),
         (bpy.ops.object.water_mirror_setup, {}),
     ]
     for operator, args in calls:
@@ -123,7 +123,7 @@ def test_a_removed_socket_shows_repair_and_repair_keeps_the_values_left(scene):
     problem = repair.needs_repair(material)
     assert problem is not None and "'Wave Length'" in problem
     assert _labels(log, "ERROR") == [problem]
-    assert ("operator", "object.water_surface_repair", "") in log
+    assert ("operator", "object.water_repair", "") in log
     assert not _props(log), "no input of a broken water is drawn"
 
     read = values.read_values(material)  # no KeyError: the missing input is left out
@@ -132,7 +132,7 @@ def test_a_removed_socket_shows_repair_and_repair_keeps_the_values_left(scene):
     _refused_until_repaired()
     assert node.inputs["Wave Height"].default_value == pytest.approx(0.7)
 
-    assert bpy.ops.object.water_surface_repair() == {"FINISHED"}
+    assert bpy.ops.object.water_repair() == {"FINISHED"}
     assert repair.needs_repair(material) is None
     assert node.node_tree.name == "Water Surface", "the add-on's group is rebuilt in place"
     assert [s.name for s in node.inputs] == _expected_inputs()
@@ -143,11 +143,11 @@ def test_a_removed_socket_shows_repair_and_repair_keeps_the_values_left(scene):
     log = draw_panel()
     assert not _labels(log, "ERROR")[:1] or "Mirror" in _labels(log, "ERROR")[0]
     assert "Wave Length" in _props(log)
-    assert bpy.ops.object.water_surface_preset_apply(preset="calm_mirror") == {"FINISHED"}
+    assert bpy.ops.object.water_preset_apply(preset="calm_mirror") == {"FINISHED"}
     assert repair.needs_repair(material) is None
-    assert bpy.ops.object.water_surface_repair.poll() is False  # nothing to repair
+    assert bpy.ops.object.water_repair.poll() is False  # nothing to repair
     with pytest.raises(RuntimeError, match="needs no repair"):
-        bpy.ops.object.water_surface_repair()
+        bpy.ops.object.water_repair()
 
 
 def test_a_replaced_group_shows_repair_and_repair_brings_back_the_add_ons(scene):
@@ -162,11 +162,11 @@ def test_a_replaced_group_shows_repair_and_repair_brings_back_the_add_ons(scene)
     log = draw_panel()  # no KeyError
     problem = harness.addon("water.repair").needs_repair(material)
     assert "'My Group', not the add-on's group" in problem
-    assert _labels(log, "ERROR") == [problem] and ("operator", "object.water_surface_repair", "") in log
+    assert _labels(log, "ERROR") == [problem] and ("operator", "object.water_repair", "") in log
     assert "wave_length" not in harness.addon("water.values").read_values(material)
     _refused_until_repaired()
 
-    assert bpy.ops.object.water_surface_repair() == {"FINISHED"}
+    assert bpy.ops.object.water_repair() == {"FINISHED"}
     assert harness.addon("water.repair").needs_repair(material) is None
     assert node.node_tree == own and group.users == 0
     assert [s.name for s in node.inputs] == _expected_inputs()
@@ -179,7 +179,7 @@ def test_a_replaced_group_shows_repair_and_repair_brings_back_the_add_ons(scene)
 
 
 def test_an_ocean_whose_group_lost_a_socket_shows_repair_and_is_repaired(scene):
-    assert bpy.ops.object.water_surface_add(preset="ocean", resolution=3, size=10) == {"FINISHED"}
+    assert bpy.ops.object.water_add(preset="ocean", resolution=3, size=10) == {"FINISHED"}
     material = bpy.context.active_object.active_material
     normal, shade = harness.addon("nodes.ocean_material").ocean_nodes(material)
     normal.inputs["Bump Strength"].default_value = 0.7
@@ -190,9 +190,9 @@ def test_an_ocean_whose_group_lost_a_socket_shows_repair_and_is_repaired(scene):
     repair = harness.addon("water.repair")
     problem = repair.needs_repair(material)
     assert "'Deep Color'" in problem
-    assert _labels(log, "ERROR") == [problem] and ("operator", "object.water_surface_repair", "") in log
+    assert _labels(log, "ERROR") == [problem] and ("operator", "object.water_repair", "") in log
 
-    assert bpy.ops.object.water_surface_repair() == {"FINISHED"}
+    assert bpy.ops.object.water_repair() == {"FINISHED"}
     assert repair.needs_repair(material) is None
     normal, shade = harness.addon("nodes.ocean_material").ocean_nodes(material)
     assert "Deep Color" in [s.name for s in shade.inputs]

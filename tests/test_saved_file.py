@@ -22,7 +22,7 @@ def test_saved_water_renders_the_same_without_the_add_on_and_with_auto_run_off(
     scene.collection.objects.link(sun)
     harness.add_cube(scene, (1, 3, 0.8), material=harness.emission_material("Block", (1, 0.2, 0.1)))
     harness.add_cube(scene, (0, 0, -1.5), material=harness.emission_material("Floor", (0.1, 0.6, 0.2)))
-    bpy.ops.object.water_surface_add(size=12, wave_length=1.0, wind_force=0.2)
+    bpy.ops.object.water_add(size=12, wave_length=1.0, wind_force=0.2)
     harness.add_camera(scene, (0, -6, 2.5), (0, 1, 0))
     scene.frame_set(48)  # two seconds in: the clock driver has moved the bump
     path = tmp_path / "lake.blend"
@@ -30,7 +30,7 @@ def test_saved_water_renders_the_same_without_the_add_on_and_with_auto_run_off(
     with_addon = render(scene, "with-addon", exr=True)
 
     addon_utils.disable(harness.ADDON_MODULE, default_set=True)
-    assert not hasattr(bpy.types, "OBJECT_OT_water_surface_add")
+    assert not hasattr(bpy.types, "OBJECT_OT_water_add")
     bpy.context.preferences.filepaths.use_scripts_auto_execute = False
     bpy.ops.wm.open_mainfile(filepath=str(path), load_ui=False, use_scripts=False)
     scene = bpy.context.scene

@@ -246,7 +246,7 @@ def test_the_swell_keys_through_the_operator_panel_and_api_and_height_0_removes_
     open_sea = harness.addon("water.sea.open_sea")
     assert _open_sea(scene, resolution=17, name="Calm") is not None
     assert open_sea.swell_modifier(bpy.data.objects["Calm"]) is None, "the preset's height 0: no swell"
-    result = bpy.ops.object.water_surface_add(
+    result = bpy.ops.object.water_add(
         preset="open_sea",
         resolution=17,
         see_surroundings=False,
@@ -318,7 +318,7 @@ def test_repair_floating_and_removal_keep_working_with_a_swell(scene):
     _remove_input(shade.node_tree, "Deep Color")
     bpy.context.view_layer.objects.active = sea
     assert harness.addon("water.repair").needs_repair(sea.active_material) is not None
-    assert bpy.ops.object.water_surface_repair() == {"FINISHED"}
+    assert bpy.ops.object.water_repair() == {"FINISHED"}
     assert open_sea.swell_modifier(sea) is not None and len(_swell_driver(sea)) == 1
     assert open_sea.sea_modifiers(sea) is not None
 

@@ -243,7 +243,7 @@ def test_the_shore_foam_renders_the_same_without_the_add_on_in_eevee(
     with_addon = render(scene, "with-addon", exr=True)[..., :3]
 
     addon_utils.disable(harness.ADDON_MODULE, default_set=True)
-    assert not hasattr(bpy.types, "OBJECT_OT_water_surface_add")
+    assert not hasattr(bpy.types, "OBJECT_OT_water_add")
     bpy.context.preferences.filepaths.use_scripts_auto_execute = False
     bpy.ops.wm.open_mainfile(filepath=str(path), load_ui=False, use_scripts=False)
     scene = bpy.context.scene

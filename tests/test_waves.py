@@ -65,7 +65,7 @@ def _angles(a, b):
 def test_heights_and_normals_match_the_four_sines_at_two_times(scene, wave_math, seeds):
     """The ocean preset's waves are SPEC's four, summed by `wave_math` (its formulas checked
     against SPEC's in tests/plain/test_reference_constants.py)."""
-    bpy.ops.object.water_surface_add(preset="ocean", size=60, resolution=97)
+    bpy.ops.object.water_add(preset="ocean", size=60, resolution=97)
     ocean = bpy.context.active_object
     rest = _rest(ocean)
     amplitude_sum = sum(a for a, _length, _speed, _direction in SPEC_WAVES)
@@ -104,7 +104,7 @@ def test_every_wave_input_counts_and_zero_amplitude_removes_a_wave(scene, wave_m
 
 
 def test_with_every_amplitude_zero_the_grid_is_flat(scene, waves):
-    bpy.ops.object.water_surface_add(preset="ocean", size=30, resolution=33)
+    bpy.ops.object.water_add(preset="ocean", size=30, resolution=33)
     ocean = bpy.context.active_object
     modifier = waves.wave_modifier(ocean)
     for number in range(1, 5):
@@ -117,7 +117,7 @@ def test_with_every_amplitude_zero_the_grid_is_flat(scene, waves):
 
 @pytest.mark.lts
 def test_the_lake_combines_with_waves_and_the_panel_finds_their_inputs(scene, waves, seeds):
-    bpy.ops.object.water_surface_add(preset="lake", waves=True, resolution=65, size=40)
+    bpy.ops.object.water_add(preset="lake", waves=True, resolution=65, size=40)
     lake = bpy.context.active_object
     modifier = waves.wave_modifier(lake)
     assert modifier is not None
@@ -187,7 +187,7 @@ def test_resolution_is_clamped_to_what_a_machine_can_hold(scene, monkeypatch):
 
 
 def test_the_add_operator_grid_has_the_asked_resolution_and_uvs(scene):
-    bpy.ops.object.water_surface_add(preset="ocean", size=10, resolution=5)
+    bpy.ops.object.water_add(preset="ocean", size=10, resolution=5)
     ocean = bpy.context.active_object
     assert len(ocean.data.vertices) == 25 and len(ocean.data.polygons) == 16
     assert all(p.normal.z > 0.99 for p in ocean.data.polygons)
@@ -198,7 +198,7 @@ def test_the_add_operator_grid_has_the_asked_resolution_and_uvs(scene):
 
 @pytest.mark.lts
 def test_saved_ocean_animates_with_the_add_on_disabled(scene, wave_math, seeds, tmp_path):
-    bpy.ops.object.water_surface_add(preset="ocean", size=20, resolution=17)
+    bpy.ops.object.water_add(preset="ocean", size=20, resolution=17)
     rest = _rest(bpy.context.active_object)
     path = tmp_path / "ocean.blend"
     bpy.ops.wm.save_as_mainfile(filepath=str(path))
@@ -241,9 +241,9 @@ def test_the_sky_comes_from_the_world_image_or_follows_the_world_colour(scene, t
 
 
 def test_panel_ocean_inputs_name_real_group_inputs(scene):
-    bpy.ops.object.water_surface_add(preset="ocean", resolution=3, size=10)
+    bpy.ops.object.water_add(preset="ocean", resolution=3, size=10)
     material = bpy.context.active_object.active_material
     normal, shade = harness.addon("nodes.ocean_material").ocean_nodes(material)
     nodes = {"normal": normal, "shade": shade}
-    for which, name in harness.addon("ui.panel")._OCEAN_INPUTS:
+    for which, name in harness.addon("ui.sea")._OCEAN_INPUTS:
         assert name in nodes[which].inputs

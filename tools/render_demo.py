@@ -280,9 +280,9 @@ def add_fill(bpy, scene):
 def add_water(bpy, preset="lake"):
     """The seeds' lake through the add-on's own operator (it also runs the mirror set-up, and
     gathers what reaches below the water as its surroundings)."""
-    result = bpy.ops.object.water_surface_add(preset=preset, size=128, location=(0.0, 0.0, 0.0))
+    result = bpy.ops.object.water_add(preset=preset, size=128, location=(0.0, 0.0, 0.0))
     if result != {"FINISHED"}:
-        raise RuntimeError(f"object.water_surface_add returned {result}")
+        raise RuntimeError(f"object.water_add returned {result}")
     return bpy.context.active_object
 
 

@@ -74,7 +74,7 @@ def main():
     harness.install(harness.build_zip(tempfile.mkdtemp(prefix="water_surface_dist_")))
     scene = harness.clean_scene(width=SIZE[0], height=SIZE[1], samples=8)
     sky_world(bpy, scene)  # first: the ocean material looks the world's image up when it is made
-    bpy.ops.object.water_surface_add(preset="ocean", size=1200, resolution=1024)
+    bpy.ops.object.water_add(preset="ocean", size=1200, resolution=1024)
     harness.add_camera(scene, (0, -30, 6), (0, 40, 0), lens=28)
     scene.frame_set(48)
     print(f"[1/1] ocean, {SIZE[0]} x {SIZE[1]}, Blender {bpy.app.version_string} ...", flush=True)

@@ -1,10 +1,10 @@
-"""The sidebar panel and menu entries."""
+"""The sidebar panel and menu entries; the panel's parts by family (see `panel.py`)."""
 
 import bpy
 
-from . import menus, panel
+from . import lake, menus, panel
 
-classes = (panel.WATER_MT_presets, panel.VIEW3D_PT_water_surface)
+classes = (lake.WATER_MT_presets, panel.VIEW3D_PT_water_surface)
 
 _register_classes, _unregister_classes = bpy.utils.register_classes_factory(classes)
 

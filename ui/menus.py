@@ -4,7 +4,7 @@ import bpy
 
 
 def draw_add_entry(self, _context):
-    self.layout.operator("object.water_surface_add", text="Water Surface", icon="MOD_OCEAN")
+    self.layout.operator("object.water_add", text="Water Surface", icon="MOD_OCEAN")
 
 
 _MENUS = ("VIEW3D_MT_mesh_add", "VIEW3D_MT_add")

@@ -3,9 +3,9 @@ water again."""
 
 import bpy
 
-from ..water.boats import keep_out
-from . import _poll
-from ._selected import run_on_selected, take_off_selected
+from ...water.boats import keep_out
+from .. import _poll
+from .._selected import run_on_selected, take_off_selected
 
 
 class OBJECT_OT_water_keep_out(bpy.types.Operator):

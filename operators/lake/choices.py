@@ -1,14 +1,15 @@
-"""Choose the sun the glint follows and the normal map the water samples (lake shading)."""
+"""`object.water_sun_set` and `object.water_bump_set`: the sun the glint follows and the normal map
+the water samples (lake shading)."""
 
 import bpy
 
-from ..nodes.bump_image import IMAGE_NAME as BUMP_IMAGE_NAME
-from ..nodes.bump_image import is_bump_image
-from ..nodes.material import drive_sun, glint_sun, set_bump_image
-from ..water import kind, sun_link
-from ..water.editable import NotEditableError, check_editable
-from ..water.values import water_material
-from . import _poll
+from ...nodes.bump_image import IMAGE_NAME as BUMP_IMAGE_NAME
+from ...nodes.bump_image import is_bump_image
+from ...nodes.material import drive_sun, glint_sun, set_bump_image
+from ...water import kind, sun_link
+from ...water.editable import NotEditableError, check_editable
+from ...water.values import water_material
+from .. import _poll
 
 _items = {}  # kept alive for Blender's dynamic enums
 
@@ -58,10 +59,10 @@ class _LakeChoice:
         return {"FINISHED"}
 
 
-class OBJECT_OT_water_surface_sun_set(_LakeChoice, bpy.types.Operator):
+class OBJECT_OT_water_sun_set(_LakeChoice, bpy.types.Operator):
     """Choose the sun whose direction the water's glint follows"""
 
-    bl_idname = "object.water_surface_sun_set"
+    bl_idname = "object.water_sun_set"
     bl_label = "Glint Sun"
     bl_property = "sun"
 
@@ -79,10 +80,10 @@ class OBJECT_OT_water_surface_sun_set(_LakeChoice, bpy.types.Operator):
         return f"Glint follows {followed}" + "".join(f"; {change}" for change in changes)
 
 
-class OBJECT_OT_water_surface_bump_set(_LakeChoice, bpy.types.Operator):
+class OBJECT_OT_water_bump_set(_LakeChoice, bpy.types.Operator):
     """Choose the tangent-space normal map the water scrolls"""
 
-    bl_idname = "object.water_surface_bump_set"
+    bl_idname = "object.water_bump_set"
     bl_label = "Bump Image"
     bl_property = "image"
     feature = "bump_choice"

@@ -2,11 +2,11 @@
 
 import bpy
 
-from ..presets import PresetError
-from ..water.editable import NotEditableError
-from ..water.sea import open_sea
-from . import _poll
-from ._props import add_field_properties
+from ...presets import PresetError
+from ...water.editable import NotEditableError
+from ...water.sea import open_sea
+from .. import _poll
+from .._props import add_field_properties
 
 
 class OBJECT_OT_water_sea_swell(bpy.types.Operator):

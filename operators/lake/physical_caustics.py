@@ -2,9 +2,9 @@
 
 import bpy
 
-from ..water import physical_caustics
-from ..water.editable import NotEditableError
-from . import _poll
+from ...water import physical_caustics
+from ...water.editable import NotEditableError
+from .. import _poll
 
 
 class OBJECT_OT_water_physical_caustics(bpy.types.Operator):

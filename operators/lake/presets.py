@@ -1,12 +1,12 @@
-"""Apply, save and remove water presets on the active water object."""
+"""`object.water_preset_apply`, `_add` and `_remove`: lake values from, and into, presets."""
 
 import bpy
 
-from .. import presets
-from ..water import apply, kind
-from ..water.errors import WaterError
-from ..water.values import water_material
-from . import _poll
+from ... import presets
+from ...water import apply, kind
+from ...water.errors import WaterError
+from ...water.values import water_material
+from .. import _poll
 
 
 def _active_water(operator, context):
@@ -18,10 +18,10 @@ def _active_water(operator, context):
     return water_material(context.active_object)
 
 
-class OBJECT_OT_water_surface_preset_apply(bpy.types.Operator):
+class OBJECT_OT_water_preset_apply(bpy.types.Operator):
     """Set the active water's values from a preset"""
 
-    bl_idname = "object.water_surface_preset_apply"
+    bl_idname = "object.water_preset_apply"
     bl_label = "Apply Water Preset"
     bl_options = {"REGISTER", "UNDO"}
 
@@ -47,10 +47,10 @@ class OBJECT_OT_water_surface_preset_apply(bpy.types.Operator):
         return {"FINISHED"}
 
 
-class OBJECT_OT_water_surface_preset_add(bpy.types.Operator):
+class OBJECT_OT_water_preset_add(bpy.types.Operator):
     """Save the active water's values as a user preset"""
 
-    bl_idname = "object.water_surface_preset_add"
+    bl_idname = "object.water_preset_add"
     bl_label = "Save Water Preset"
 
     name: bpy.props.StringProperty(name="Name", description="Name of the new preset", default="My Water")
@@ -90,10 +90,10 @@ class OBJECT_OT_water_surface_preset_add(bpy.types.Operator):
         return {"FINISHED"}
 
 
-class OBJECT_OT_water_surface_preset_remove(bpy.types.Operator):
+class OBJECT_OT_water_preset_remove(bpy.types.Operator):
     """Delete a user preset (built-in presets stay)"""
 
-    bl_idname = "object.water_surface_preset_remove"
+    bl_idname = "object.water_preset_remove"
     bl_label = "Remove Water Preset"
 
     preset: bpy.props.EnumProperty(name="Preset", items=presets.enum_items)

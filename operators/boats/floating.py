@@ -2,10 +2,10 @@
 
 import bpy
 
-from ..water.boats import floating
-from ..water.editable import why_not_editable
-from . import _poll
-from ._selected import not_water, run_on_selected, take_off_selected
+from ...water.boats import floating
+from ...water.editable import why_not_editable
+from .. import _poll
+from .._selected import not_water, run_on_selected, take_off_selected
 
 
 def _metres(name, description, soft_max):

@@ -1,4 +1,4 @@
-"""`object.water_surface_repair`: point a broken water's node back to the add-on's group."""
+"""`object.water_repair`: point a broken water's node back to the add-on's group."""
 
 import bpy
 
@@ -8,10 +8,10 @@ from ..water.values import water_material
 from . import _poll
 
 
-class OBJECT_OT_water_surface_repair(bpy.types.Operator):
+class OBJECT_OT_water_repair(bpy.types.Operator):
     """Rebuild the active water's node group (replaced, or missing sockets), keeping the values it can"""
 
-    bl_idname = "object.water_surface_repair"
+    bl_idname = "object.water_repair"
     bl_label = "Repair Water"
     bl_options = {"REGISTER", "UNDO"}
 

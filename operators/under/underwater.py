@@ -3,9 +3,9 @@ through, on or off."""
 
 import bpy
 
-from ..water import apply
-from ..water.errors import WaterError
-from . import _poll
+from ...water import apply
+from ...water.errors import WaterError
+from .. import _poll
 
 
 class OBJECT_OT_water_underwater(bpy.types.Operator):

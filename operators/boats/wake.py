@@ -3,10 +3,10 @@ they move, or no longer."""
 
 import bpy
 
-from ..water.boats import wake
-from ..water.editable import NotEditableError
-from . import _poll
-from ._selected import run_on_selected, take_off_selected
+from ...water.boats import wake
+from ...water.editable import NotEditableError
+from .. import _poll
+from .._selected import run_on_selected, take_off_selected
 
 
 class OBJECT_OT_water_wake_add(bpy.types.Operator):
