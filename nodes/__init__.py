@@ -4,19 +4,10 @@ This package's descriptions (`SPECS`) are plain data and import without Blender;
 (`builder.py`) and the material modules are the parts that need `bpy`.
 """
 
-from . import (
-    bump_uv,
-    caustics,
-    float_fit,
-    keep_out,
-    ocean,
-    sea_fade,
-    underside,
-    water_surface,
-    water_waves,
-    wind_frame,
-)
-from .boats import wake
+from . import bump_uv, caustics, underside, water_waves, wind_frame
+from .boats import float_fit, keep_out, wake
+from .lake import water_surface
+from .sea import ocean_normal, ocean_shade, sea_fade
 from .surroundings import surroundings, surroundings_sample
 from .under import caustic_light, caustic_sheet, meniscus, underwater_fog, underwater_shell
 
@@ -30,8 +21,8 @@ SPECS = {
         water_surface.SPEC,
         water_waves.SPEC,
         sea_fade.SPEC,
-        ocean.NORMAL_SPEC,
-        ocean.SHADE_SPEC,
+        ocean_normal.NORMAL_SPEC,
+        ocean_shade.SHADE_SPEC,
         surroundings.SPEC,
         surroundings_sample.SPEC,
         keep_out.SPEC,

@@ -19,7 +19,7 @@ import bpy
 from .caustics_image import ensure_caustics_image
 from .foam_image import ensure_foam_image
 from .ownership import VERSION_KEY, mark, owned
-from .rough_fresnel_image import ensure_rough_fresnel_image
+from .sea.rough_fresnel_image import ensure_rough_fresnel_image
 from .spec import BUMP_IMAGE, CAUSTICS_IMAGE, FOAM_IMAGE, ROUGH_FRESNEL_IMAGE
 
 # The add-on's own generated tiles: a slot for one is filled with it, made when needed.

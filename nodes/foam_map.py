@@ -10,7 +10,7 @@ added with falling weights.
 
 The sum is then **equalised**: every pixel is replaced by its rank among all pixels, scaled to 0..1,
 so the tile's values are spread evenly over 0..1 (mean 0.5). The shader thresholds the tile against
-the distance to the shore (``clamp((b + f - 1) / SOFTNESS)``, see `water_surface.py`), and an even
+the distance to the shore (``clamp((b + f - 1) / SOFTNESS)``, see `foam_coverage.py`), and an even
 spread makes the covered share predictable: at falloff ``f`` about ``f - SOFTNESS / 2`` of the water
 is foam. Near the waterline only the darkest bubble middles stay open; further out only the
 brightest lace survives.

@@ -8,10 +8,11 @@ import re
 
 import bpy
 
-from . import SPECS, water_surface
+from . import SPECS, surface_parts
 from .builder import ensure_group
 from .bump_image import ensure_bump_image
 from .foam_image import ensure_foam_image
+from .lake import water_surface
 from .ownership import VERSION_KEY, is_local, is_original, mark, role_of
 
 WATER_NODE = "Water Surface"
@@ -311,7 +312,7 @@ def drive_sun_inputs(node, sun):
     if lit is not None:
         lit.driver_remove("default_value")
     if sun is None:
-        direction.default_value = water_surface.DEFAULT_SUN
+        direction.default_value = surface_parts.DEFAULT_SUN
         if color is not None:
             color.default_value = (1.0, 1.0, 1.0, 1.0)
         if lit is not None:

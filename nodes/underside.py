@@ -1,7 +1,7 @@
 """`Water Underside`: the one rule for a water surface seen from below (docs/MODEL.md section 15).
 
-Both shadings, the lake's (`water_surface.py`) and the ocean's (`ocean.py`), take from it what
-they show on a backface (Geometry > Backfacing), so Snell's window is worked out once:
+Both shadings, the lake's (`lake/water_surface.py`) and the ocean's (`sea/ocean_shade.py`), take from it
+what they show on a backface (Geometry > Backfacing), so Snell's window is worked out once:
 
 * the normal turned to face the eye, `n · sign(I · n)` (`I` Geometry > Incoming; a mesh's own
   normal comes turned on a backface, a normal worked out in the shader, as the waves', does not);

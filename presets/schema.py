@@ -10,7 +10,8 @@ from collections.abc import Mapping
 from dataclasses import dataclass
 from numbers import Real
 
-from ..nodes import ocean, water_surface
+from ..nodes.lake import water_surface
+from ..nodes.sea import ocean_shade
 from ..water.errors import WaterError
 
 
@@ -154,7 +155,7 @@ SEA_DEPTH = Field(
     "Depth of the sea floor in metres: shallow water slows and shortens the waves",
 )
 SEA_SEED = Field("sea_seed", None, "int", 0, 0, 100000, "Sea Seed", "Another seed, another sea")
-_WHITECAPS_SOCKET = next(s for s in ocean.SHADE_SPEC.inputs if s.name == "Whitecaps")
+_WHITECAPS_SOCKET = next(s for s in ocean_shade.SHADE_SPEC.inputs if s.name == "Whitecaps")
 # On the ocean shading's group, not `Water Surface`: set by `open_sea.py`, not `write_values`.
 WHITECAPS = Field(
     "whitecaps",

@@ -174,12 +174,12 @@ def test_add_mesh_menus_offer_the_operator(addon):
 
 def test_panel_sections_name_real_group_inputs(addon):
     lake, common = harness.addon("ui.lake"), harness.addon("ui.common")
-    inputs = {s.name for s in harness.addon("nodes.water_surface").INPUTS}
+    inputs = {s.name for s in harness.addon("nodes.lake.water_surface").INPUTS}
     for _title, _icon, names in lake._SECTIONS:
         for name in names:
             if name.startswith("part:"):
                 part = name[len("part:") :]
-                assert part in {p.name for p in harness.addon("nodes.water_surface").PARTS}
+                assert part in {p.name for p in harness.addon("nodes.lake.water_surface").PARTS}
                 assert set(common.PARTS[part]) <= inputs
             else:
                 assert name in inputs

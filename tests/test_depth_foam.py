@@ -33,7 +33,7 @@ def _material():
 
 def _parts():
     """Every optional part of the lake's group ("depth", "foam", "caustics")."""
-    return tuple(part.name for part in harness.addon("nodes.water_surface").PARTS)
+    return tuple(part.name for part in harness.addon("nodes.lake.water_surface").PARTS)
 
 
 def _water_material(scene):
@@ -243,7 +243,7 @@ def test_foam_is_lit_white_bright_in_sun_and_dim_in_shadow(lake, render):
     renders["no foam"] = _view(lake, render, 0, "water_sun")
     means = {name: pixels[strip].mean() for name, pixels in renders.items()}
     print("mean brightness of the foam strip:", {name: round(float(v), 3) for name, v in means.items()})
-    if bpy.app.version >= harness.addon("nodes.water_surface").LIT_FOAM_SINCE:
+    if bpy.app.version >= harness.addon("nodes.surface_parts").LIT_FOAM_SINCE:
         assert means["sun"] > means["shadow"] + 0.2, means
     else:  # 4.2: unlit white foam (a diffuse closure would cost the traced refraction), as the README says
         assert abs(means["sun"] - means["shadow"]) < 0.1 and means["shadow"] > means["no foam"] + 0.2, means

@@ -158,7 +158,7 @@ def test_a_swapped_image_is_reflected_as_numpy_looks_it_up(addon, eevee, render,
         scene.cycles.device = "CPU"
     _warm_image_world(scene)
     added = harness.addon("api").add_water(scene, shading="ocean", size=400.0, see_surroundings=False)
-    normal, _shade = harness.addon("nodes.ocean_material").ocean_nodes(added.material)
+    normal, _shade = harness.addon("nodes.sea.ocean_material").ocean_nodes(added.material)
     normal.inputs["Bump Strength"].default_value = 0.0
     camera = harness.add_camera(scene, (0.0, -20.0, 6.0), (10.0, 40.0, 0.0), lens=30.0)
     environment = next(n for n in scene.world.node_tree.nodes if n.type == "TEX_ENVIRONMENT")

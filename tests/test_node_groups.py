@@ -120,7 +120,7 @@ def test_older_group_is_upgraded_in_place_keeping_material_values(scene):
     # The variant with every part: the lean `Water Surface` of an older stamp is a legacy group,
     # retired rather than upgraded (test_lake_cost.py).
     every = ("depth", "foam", "caustics")
-    spec = harness.addon("nodes.water_surface").spec_with(every)
+    spec = harness.addon("nodes.lake.water_surface").spec_with(every)
     material = _material().make_water_material(scene=scene)
     node = _material().water_node(material)
     node.node_tree = tree = _material().water_group(parts=every)
@@ -147,8 +147,8 @@ def test_lake_and_ocean_see_from_below_by_the_one_underside_group(scene):
     role_of = harness.addon("nodes.ownership").role_of
     lean = _material().water_group()
     full = _material().water_group(parts=("depth", "foam", "caustics"))
-    ocean = harness.addon("nodes.ocean_material").make_ocean_material("Ocean", scene=scene)
-    _normal, shade = harness.addon("nodes.ocean_material").ocean_nodes(ocean)
+    ocean = harness.addon("nodes.sea.ocean_material").make_ocean_material("Ocean", scene=scene)
+    _normal, shade = harness.addon("nodes.sea.ocean_material").ocean_nodes(ocean)
     undersides = set()
     for tree in (lean, full, shade.node_tree):
         users = [n for n in tree.nodes if n.type == "GROUP" and role_of(n.node_tree) == "Water Underside"]

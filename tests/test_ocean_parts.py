@@ -19,7 +19,7 @@ def _api():
 
 
 def _ocean_material():
-    return harness.addon("nodes.ocean_material")
+    return harness.addon("nodes.sea.ocean_material")
 
 
 def _shade(water):

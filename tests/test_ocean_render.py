@@ -32,7 +32,7 @@ def sea(addon, eevee):
     harness.set_world_color(scene, SKY)
     bpy.ops.object.water_add(preset="ocean", size=80, resolution=161)
     ocean = bpy.context.active_object
-    normal, _shade = harness.addon("nodes.ocean_material").ocean_nodes(ocean.active_material)
+    normal, _shade = harness.addon("nodes.sea.ocean_material").ocean_nodes(ocean.active_material)
     normal.inputs["Bump Strength"].default_value = 0.0
     camera = harness.add_camera(scene, (0, -18, 22), (0, 2, 0), lens=30)
     return scene, camera
@@ -192,7 +192,7 @@ def bright_sea(addon, eevee):
     sky = _bright_sky_world(scene)  # first: the ocean material takes the world's image when made
     bpy.ops.object.water_add(preset="ocean", size=OCEAN_SIZE, resolution=241)
     ocean = bpy.context.active_object
-    normal, shade = harness.addon("nodes.ocean_material").ocean_nodes(ocean.active_material)
+    normal, shade = harness.addon("nodes.sea.ocean_material").ocean_nodes(ocean.active_material)
     shade.inputs["Traced Sky"].default_value = 0.0  # the seeds' own look-up of their sky, and its glint
     normal.inputs["Bump Strength"].default_value = BUMP_STRENGTH
     normal.inputs["Tex Stretch"].default_value = TEX_STRETCH

@@ -70,7 +70,7 @@ def _sky_texture_world(scene):
 def _flat_sea(scene):
     """A 400 m plane with the ocean shading, its bump off: the shading normal is +Z."""
     added = harness.addon("api").add_water(scene, shading="ocean", size=400.0, see_surroundings=False)
-    normal, shade = harness.addon("nodes.ocean_material").ocean_nodes(added.material)
+    normal, shade = harness.addon("nodes.sea.ocean_material").ocean_nodes(added.material)
     normal.inputs["Bump Strength"].default_value = 0.0
     return added, shade
 
@@ -129,7 +129,7 @@ def test_the_sky_texture_shows_every_wave_in_eevee_and_cycles(addon, eevee, rend
     seen = {}
     for engine in (eevee, "CYCLES"):
         scene, added, on_sea = _wavy_sea_under_the_sky_texture(engine)
-        _normal, shade = harness.addon("nodes.ocean_material").ocean_nodes(added.material)
+        _normal, shade = harness.addon("nodes.sea.ocean_material").ocean_nodes(added.material)
         assert shade.inputs["Traced Sky"].default_value == 1.0
         pixels = render(scene, f"sky-texture-{engine}", exr=True)[..., :3]
         luminance = pixels @ np.array((0.2126, 0.7152, 0.0722))
@@ -186,7 +186,7 @@ def test_a_traced_sky_sea_with_a_float_renders_the_same_without_the_add_on(
     _gradient_world(scene)
     harness.add_cube(scene, (0.0, 10.0, -3.0), size=6.0, name="Bed")
     added = harness.addon("api").add_water(scene, preset="open_sea", sea_wind_speed=6.0)
-    _normal, shade = harness.addon("nodes.ocean_material").ocean_nodes(added.material)
+    _normal, shade = harness.addon("nodes.sea.ocean_material").ocean_nodes(added.material)
     assert shade.node_tree.name == "Water Ocean Shade + Traced Sky"
     buoy = harness.add_cube(scene, (1.0, 6.0, 0.0), size=0.8, name="Buoy")
     harness.addon("api").float_on_water(buoy, added.object)

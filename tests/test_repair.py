@@ -86,7 +86,7 @@ def _remove_input(tree, name):
 
 
 def _expected_inputs():
-    return [socket.name for socket in harness.addon("nodes.water_surface").INPUTS]
+    return [socket.name for socket in harness.addon("nodes.lake.water_surface").INPUTS]
 
 
 def _refused_until_repaired():
@@ -181,7 +181,7 @@ def test_a_replaced_group_shows_repair_and_repair_brings_back_the_add_ons(scene)
 def test_an_ocean_whose_group_lost_a_socket_shows_repair_and_is_repaired(scene):
     assert bpy.ops.object.water_add(preset="ocean", resolution=3, size=10) == {"FINISHED"}
     material = bpy.context.active_object.active_material
-    normal, shade = harness.addon("nodes.ocean_material").ocean_nodes(material)
+    normal, shade = harness.addon("nodes.sea.ocean_material").ocean_nodes(material)
     normal.inputs["Bump Strength"].default_value = 0.7
     assert "Deep Color" in _props(draw_panel())
 
@@ -194,7 +194,7 @@ def test_an_ocean_whose_group_lost_a_socket_shows_repair_and_is_repaired(scene):
 
     assert bpy.ops.object.water_repair() == {"FINISHED"}
     assert repair.needs_repair(material) is None
-    normal, shade = harness.addon("nodes.ocean_material").ocean_nodes(material)
+    normal, shade = harness.addon("nodes.sea.ocean_material").ocean_nodes(material)
     assert "Deep Color" in [s.name for s in shade.inputs]
     assert normal.inputs["Bump Strength"].default_value == pytest.approx(0.7)
     assert shade.inputs["Normal"].links[0].from_socket == normal.outputs["Normal"]

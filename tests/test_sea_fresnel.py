@@ -33,7 +33,7 @@ def _render_calm_sea(engine, render, preset):
     added = harness.addon("api").add_water(scene, preset=preset, see_surroundings=False, **values)
     camera = harness.add_camera(scene, (0.0, 0.0, 3.0), (0.0, 10.0, 0.2), lens=12.0)
     camera.data.clip_end = 30000.0
-    shade = harness.addon("nodes.ocean_material").ocean_nodes(added.material)[1]
+    shade = harness.addon("nodes.sea.ocean_material").ocean_nodes(added.material)[1]
     # The open sea as it is made (Water Fresnel 1); the seeds' ocean as it is made (0).
     deep = np.array(shade.inputs["Deep Color"].default_value[:3])
     pixels = render(scene, f"calm_{preset}_{engine}", exr=True)[..., :3]

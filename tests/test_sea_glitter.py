@@ -48,7 +48,7 @@ def _glitter_scene(engine):
     sea = harness.addon("api").add_water(
         scene, preset="open_sea", sea_wind_speed=WIND_SPEED, wind_direction=WIND
     )
-    shade = harness.addon("nodes.ocean_material").ocean_nodes(sea.object.active_material)[1]
+    shade = harness.addon("nodes.sea.ocean_material").ocean_nodes(sea.object.active_material)[1]
     shade.inputs["Debug View"].default_value = 5
     shade.inputs["Glint Power"].default_value = POWER
     ahead = 100.0 * toward

@@ -12,7 +12,7 @@ import harness
 PIXEL = 0.05  # metres a pixel, straight down
 SIDE = 256  # pixels: a 12.8 m patch (a 6.4 m one varies by 20% from place to place)
 # Two diagonals, neither along an axis of the grid or the bump's frame: the bump's raw slopes lean
-# along the first (`ocean.BUMP_SLOPE_COVARIANCE`), so each would favour one of them.
+# along the first (`ocean_normal.BUMP_SLOPE_COVARIANCE`), so each would favour one of them.
 WINDS = [(0.6, 0.8), (-0.8, 0.6)]
 
 
@@ -22,7 +22,7 @@ def _api():
 
 def _slopes_seen(scene, sea, render, name, wind):
     """(upwind, crosswind) mean square slopes of the shading normal (Debug View 4) straight down."""
-    _normal, shade = harness.addon("nodes.ocean_material").ocean_nodes(sea.active_material)
+    _normal, shade = harness.addon("nodes.sea.ocean_material").ocean_nodes(sea.active_material)
     shade.inputs["Debug View"].default_value = 4
     n = render(scene, name, exr=True)[..., :3].reshape(-1, 3) * 2.0 - 1.0
     slopes = -n[:, :2] / n[:, 2:3]
@@ -60,14 +60,15 @@ def test_the_sea_s_slopes_are_cox_and_munk_s_upwind_larger(addon, eevee, render,
 @pytest.mark.lts
 def test_the_slopes_follow_the_wind_set_in_the_panel(scene):
     added = _api().add_water(scene, preset="open_sea", sea_wind_speed=5.0, see_surroundings=False)
-    normal, _shade = harness.addon("nodes.ocean_material").ocean_nodes(added.material)
+    normal, _shade = harness.addon("nodes.sea.ocean_material").ocean_nodes(added.material)
     ocean, _fade = harness.addon("water.sea.open_sea").sea_modifiers(added.object)
     sea_math = harness.addon("water.sea.sea_math")
 
     def evaluated():
         depsgraph = bpy.context.evaluated_depsgraph_get()
         depsgraph.update()
-        node = harness.addon("nodes.ocean_material").ocean_nodes(added.material.evaluated_get(depsgraph))[0]
+        ocean_material = harness.addon("nodes.sea.ocean_material")
+        node = ocean_material.ocean_nodes(added.material.evaluated_get(depsgraph))[0]
         return {
             name: node.inputs[name].default_value for name in ("Slope Along Wind", "Slope Across Wind")
         }, tuple(node.inputs["Wind Direction"].default_value)
@@ -85,7 +86,7 @@ def test_the_slopes_follow_the_wind_set_in_the_panel(scene):
 
 def test_repair_gives_the_sea_its_wind_drivers_back(scene):
     added = _api().add_water(scene, preset="open_sea", sea_wind_speed=9.0, see_surroundings=False)
-    normal, _shade = harness.addon("nodes.ocean_material").ocean_nodes(added.material)
+    normal, _shade = harness.addon("nodes.sea.ocean_material").ocean_nodes(added.material)
     tree = normal.node_tree
     tree.interface.remove(
         next(i for i in tree.interface.items_tree if getattr(i, "name", "") == "Tex Stretch")
@@ -96,7 +97,7 @@ def test_repair_gives_the_sea_its_wind_drivers_back(scene):
     assert repair.needs_repair(added.material) is None
     depsgraph = bpy.context.evaluated_depsgraph_get()
     depsgraph.update()
-    node = harness.addon("nodes.ocean_material").ocean_nodes(added.material.evaluated_get(depsgraph))[0]
+    node = harness.addon("nodes.sea.ocean_material").ocean_nodes(added.material.evaluated_get(depsgraph))[0]
     up, cross = harness.addon("water.sea.sea_math").cox_munk_slopes(9.0)
     assert node.inputs["Slope Along Wind"].default_value ** 2 == pytest.approx(up, rel=1e-3)
     assert node.inputs["Slope Across Wind"].default_value ** 2 == pytest.approx(cross, rel=1e-3)

@@ -314,7 +314,7 @@ def test_repair_floating_and_removal_keep_working_with_a_swell(scene):
 
     sea = _open_sea(scene, resolution=65, sea_wind_speed=8.0, sea_swell_height=2.0, sea_swell_direction=SWELL)
     open_sea = harness.addon("water.sea.open_sea")
-    shade = harness.addon("nodes.ocean_material").ocean_nodes(sea.active_material)[1]
+    shade = harness.addon("nodes.sea.ocean_material").ocean_nodes(sea.active_material)[1]
     _remove_input(shade.node_tree, "Deep Color")
     bpy.context.view_layer.objects.active = sea
     assert harness.addon("water.repair").needs_repair(sea.active_material) is not None

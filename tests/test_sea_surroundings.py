@@ -163,8 +163,8 @@ def renders(shore, tmp_path_factory):
             api.write_values(sea, {key: before})
     # The caustics built in but at 0 (a group saved before they were optional), against
     # "no_caustics" (the lean group `write_values` switched to).
-    shade = harness.addon("nodes.ocean_material").ocean_nodes(sea.active_material)[1]
-    ocean, nodes = harness.addon("nodes.ocean"), harness.addon("nodes")
+    shade = harness.addon("nodes.sea.ocean_material").ocean_nodes(sea.active_material)[1]
+    ocean, nodes = harness.addon("nodes.sea.ocean_shade"), harness.addon("nodes")
     built_in = harness.addon("nodes.builder").ensure_group(
         ocean.FULL_SHADE_SPEC.variant({"traced_sky", "caustics"}), nodes.SPECS
     )

@@ -220,7 +220,7 @@ def test_saved_ocean_animates_with_the_add_on_disabled(scene, wave_math, seeds, 
 
 
 def test_the_sky_comes_from_the_world_image_or_follows_the_world_colour(scene, tmp_path):
-    ocean_material = harness.addon("nodes.ocean_material")
+    ocean_material = harness.addon("nodes.sea.ocean_material")
     harness.set_world_color(scene, (0.2, 0.3, 0.4))
     material = ocean_material.make_ocean_material("Plain Sky", scene)
     sky = material.node_tree.nodes["Sky"]
@@ -243,7 +243,7 @@ def test_the_sky_comes_from_the_world_image_or_follows_the_world_colour(scene, t
 def test_panel_ocean_inputs_name_real_group_inputs(scene):
     bpy.ops.object.water_add(preset="ocean", resolution=3, size=10)
     material = bpy.context.active_object.active_material
-    normal, shade = harness.addon("nodes.ocean_material").ocean_nodes(material)
+    normal, shade = harness.addon("nodes.sea.ocean_material").ocean_nodes(material)
     nodes = {"normal": normal, "shade": shade}
     for which, name in harness.addon("ui.sea")._OCEAN_INPUTS:
         assert name in nodes[which].inputs

@@ -55,7 +55,7 @@ def _foam_view_sea(scene, wind):
         if obj.type == "MESH":
             bpy.data.objects.remove(obj)
     sea = harness.addon("api").add_water(scene, preset="open_sea", sea_wind_speed=wind, wind_direction=WIND)
-    harness.addon("nodes.ocean_material").ocean_nodes(sea.object.active_material)[1].inputs[
+    harness.addon("nodes.sea.ocean_material").ocean_nodes(sea.object.active_material)[1].inputs[
         "Debug View"
     ].default_value = 7
     return sea.object
@@ -281,7 +281,7 @@ def test_in_the_picture_whitecaps_are_white(sea_scene, render, sun, height):
     up frame 20 showed no white within 35 m, frame 120 4.5% in lines a few centimetres wide."""
     scene = sea_scene
     sea = _foam_view_sea(scene, 15.0)
-    debug = harness.addon("nodes.ocean_material").ocean_nodes(sea.active_material)[1].inputs["Debug View"]
+    debug = harness.addon("nodes.sea.ocean_material").ocean_nodes(sea.active_material)[1].inputs["Debug View"]
     scene.render.resolution_x, scene.render.resolution_y = 192, 108
     look = np.array((0.6, 0.8))
     drop = 21.0 if height == 3.0 else 60.0

@@ -3,8 +3,8 @@ glint's sun, Cycles' caustics), the bump image, the debug view and the mirror's 
 
 import bpy
 
+from ..nodes.lake.lake_parts import DEBUG_VIEWS
 from ..nodes.material import bump_image, glint_sun
-from ..nodes.water_surface import DEBUG_VIEWS
 from ..water import physical_caustics
 from ..water.mirror import find_probe
 from .common import draw_part, draw_surroundings, draw_waves

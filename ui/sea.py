@@ -3,8 +3,8 @@ own: its Ocean modifier, swell, whitecaps and the camera's reach to its horizon.
 
 import bpy
 
-from ..nodes import ocean
-from ..nodes.ocean_material import ocean_nodes
+from ..nodes.sea import ocean_shade
+from ..nodes.sea.ocean_material import ocean_nodes
 from ..water import camera_clip
 from ..water.sea import open_sea
 from .common import PARTS, draw_part, draw_surroundings
@@ -54,7 +54,7 @@ def draw_ocean_surroundings(layout, obj, material):
         if name in shade.inputs and name not in PARTS["caustics"]:
             box.prop(shade.inputs[name], "default_value", text=name)
     if "Caustics" in shade.inputs:  # a part: in the shader only while on
-        draw_part(box, shade, "caustics", ocean.FULL_SHADE_SPEC)
+        draw_part(box, shade, "caustics", ocean_shade.FULL_SHADE_SPEC)
     draw_surroundings(box, obj)
 
 

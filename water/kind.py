@@ -9,8 +9,8 @@ and nowhere else decides (the add pipeline and repair read the kind only to buil
 """
 
 from ..nodes.material import water_node
-from ..nodes.ocean_material import ocean_nodes
 from ..nodes.ownership import role_of
+from ..nodes.sea.ocean_material import ocean_nodes
 from .sea import open_sea
 
 LAKE = "lake"

@@ -8,7 +8,7 @@ from mathutils import Euler, Matrix, Vector
 
 from .. import presets
 from ..nodes.material import make_water_material
-from ..nodes.ocean_material import make_ocean_material
+from ..nodes.sea.ocean_material import make_ocean_material
 from ..presets import schema
 from . import camera_clip, kind, mirror, scene_state, surroundings, waves
 from .apply import apply_values, light_shafts_refusal

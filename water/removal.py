@@ -21,8 +21,9 @@ which a saved file leaves too high (see `users.py`).
 
 import bpy
 
-from ..nodes import bump_image, caustics_image, foam_image, rough_fresnel_image
+from ..nodes import bump_image, caustics_image, foam_image
 from ..nodes.ownership import is_local, is_original, role_of
+from ..nodes.sea import rough_fresnel_image
 from . import kind, ledger, mirror, physical_caustics, sun_link, surroundings, underwater
 from .boats import float_rig, floating, keep_out, wake
 from .editable import check_editable

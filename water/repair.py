@@ -11,9 +11,10 @@ import itertools
 
 import bpy
 
-from ..nodes import SPECS, ocean, water_surface
+from ..nodes import SPECS
 from ..nodes.builder import VERSION_KEY, ensure_group
 from ..nodes.bump_image import ensure_bump_image
+from ..nodes.lake import water_surface
 from ..nodes.material import (
     WATER_NODE,
     bump_image,
@@ -26,8 +27,9 @@ from ..nodes.material import (
     water_group,
     water_node,
 )
-from ..nodes.ocean_material import NORMAL_NODE, OCEAN_NODE, SKY_NODE, fit_shade_parts, ocean_nodes
 from ..nodes.ownership import role_of
+from ..nodes.sea import ocean_normal, ocean_shade
+from ..nodes.sea.ocean_material import NORMAL_NODE, OCEAN_NODE, SKY_NODE, fit_shade_parts, ocean_nodes
 from .boats import keep_out
 from .editable import NotEditableError, check_editable, why_not_editable
 from .errors import WaterError
@@ -85,7 +87,7 @@ def _parts(material):
         return [(water_node(material), SPECS[water_surface.NAME])]
     if shading == OCEAN:
         normal, shade = ocean_nodes(material)
-        return [(normal, SPECS[ocean.NORMAL_NAME]), (shade, SPECS[ocean.SHADE_NAME])]
+        return [(normal, SPECS[ocean_normal.NORMAL_NAME]), (shade, SPECS[ocean_shade.SHADE_NAME])]
     return []
 
 
@@ -143,7 +145,7 @@ def _take_drivers(material, node):
 
 
 # The descriptions with every optional part, by the name of the group without any.
-_FULL = {water_surface.NAME: water_surface.FULL_SPEC, ocean.SHADE_NAME: ocean.FULL_SHADE_SPEC}
+_FULL = {water_surface.NAME: water_surface.FULL_SPEC, ocean_shade.SHADE_NAME: ocean_shade.FULL_SHADE_SPEC}
 
 
 def _variant_parts(node, spec):
@@ -169,9 +171,9 @@ def _target_group(node, spec, image_source):
     def build():
         if spec.name == water_surface.NAME:
             return water_group(image_source, parts)
-        if spec.name == ocean.SHADE_NAME:
-            return ensure_group(ocean.FULL_SHADE_SPEC.variant(parts), SPECS)
-        image = ensure_bump_image() if spec.name == ocean.NORMAL_NAME else None
+        if spec.name == ocean_shade.SHADE_NAME:
+            return ensure_group(ocean_shade.FULL_SHADE_SPEC.variant(parts), SPECS)
+        image = ensure_bump_image() if spec.name == ocean_normal.NORMAL_NAME else None
         return ensure_group(spec, SPECS, image=image)
 
     target = build()
@@ -286,7 +288,7 @@ def repair_water(material, scene=None):
         restored, reset = _restore(node, kept, driven)
         if spec.name == water_surface.NAME:
             fit_parts(material)  # the variant with the parts the kept values turn on
-        elif spec.name == ocean.SHADE_NAME:
+        elif spec.name == ocean_shade.SHADE_NAME:
             fit_shade_parts(material)  # the traced sky back when it was on
         all_reset += reset
         done.append(f"'{node.name}' uses '{node.node_tree.name}' ({len(restored)} values kept)")
@@ -297,7 +299,7 @@ def repair_water(material, scene=None):
             target = keep_out.water_shader_input(material)  # through the hulls' keep-out, if any
             if target is not None:
                 _link(tree, node.outputs["Shader"], target)
-        elif spec.name == ocean.NORMAL_NAME:
+        elif spec.name == ocean_normal.NORMAL_NAME:
             drive_clock(node.inputs["Time"], clock_scene)
         else:  # the ocean shade: the surroundings' foam and caustics follow the clock and the sun
             drive_clock(node.inputs["Time"], clock_scene)

@@ -2,10 +2,10 @@
 ocean's `Water Ocean Shade`): one source of truth that the panel shows, presets fill and the
 `.blend` keeps."""
 
+from ..nodes.lake.water_surface import FULL_SPEC, PARTS
 from ..nodes.material import fit_parts, parts_built, parts_wanted, water_node
-from ..nodes.ocean import FULL_SHADE_SPEC
-from ..nodes.ocean_material import fit_shade_parts, ocean_nodes
-from ..nodes.water_surface import FULL_SPEC, PARTS
+from ..nodes.sea.ocean_material import fit_shade_parts, ocean_nodes
+from ..nodes.sea.ocean_shade import FULL_SHADE_SPEC
 from ..presets import schema
 from .errors import KindError, NeedsRepairError
 from .kind import LAKE, OCEAN, shading_of, water_material

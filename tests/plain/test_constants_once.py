@@ -43,7 +43,7 @@ def test_the_groups_and_the_sea_read_them():
     # The wedge's half-angle is asin(1/3) (SPEC section 5), whatever the speed.
     assert abs(math.atan(physics.KELVIN_TAN) - math.asin(1.0 / 3.0)) < 1e-9
     assert load("water.sea.sea_math").GRAVITY == physics.G
-    assert load("nodes.water_surface").IOR == physics.WATER_IOR
+    assert load("nodes.surface_parts").IOR == physics.WATER_IOR
     assert load("nodes.caustics").IOR == physics.WATER_IOR
     assert load("nodes.boats.wake").SPEC.nodes["k_scale"].values[0] == physics.G
     # The ring's dispersion, g + (σ/ρ) k², is worked out in its own nested group.

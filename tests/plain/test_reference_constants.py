@@ -80,15 +80,16 @@ def test_the_lake_preset_and_the_groups_hold_the_seeds_defaults():
     assert lake["wind_direction"] == [0.0, 1.0]
     assert lake["dull_color"] == [0.3, 0.3, 0.5] and lake["dull_blend"] == 0.2
     assert lake["specular_power"] == 256.0
-    surface = _defaults(load("nodes.water_surface").INPUTS) | _defaults(load("nodes.bump_uv").SCROLL_INPUTS)
+    lake_inputs = load("nodes.lake.water_surface").INPUTS
+    surface = _defaults(lake_inputs) | _defaults(load("nodes.bump_uv").SCROLL_INPUTS)
     assert surface["Wave Height"] == 0.3 and surface["Wave Length"] == 0.1 and surface["Wind Force"] == 0.02
     assert tuple(surface["Wind Direction"]) == (0.0, 1.0, 0.0)
     assert tuple(surface["Dull Color"])[:3] == (0.3, 0.3, 0.5) and surface["Dull Blend"] == 0.2
     assert surface["Specular Power"] == 256.0
-    ocean = load("nodes.ocean")
-    normal = _defaults(ocean.NORMAL_SPEC.inputs)
+    normal = _defaults(load("nodes.sea.ocean_normal").NORMAL_SPEC.inputs)
     assert normal["Bump Strength"] == 0.5 and normal["Tex Stretch"] == 4.0
-    assert tuple(_defaults(ocean.FULL_SHADE_SPEC.inputs)["Deep Color"])[:3] == (0.0, 0.2, 0.4)
+    shade = _defaults(load("nodes.sea.ocean_shade").FULL_SHADE_SPEC.inputs)
+    assert tuple(shade["Deep Color"])[:3] == (0.0, 0.2, 0.4)
 
 
 def test_water_s_physical_constants():

@@ -23,12 +23,12 @@ def _monte_carlo(cos_view, slope, count=400_000):
     ("cos_view", "slope"), [(0.02, 0.2), (0.05, 0.1), (0.1, 0.3), (0.3, 0.15), (0.5, 0.25), (0.9, 0.2)]
 )
 def test_the_mean_reflectance_is_monte_carlo_s(cos_view, slope):
-    rough = load("nodes.rough_fresnel")
+    rough = load("nodes.sea.rough_fresnel")
     assert rough.mean_reflectance(cos_view, slope) == pytest.approx(_monte_carlo(cos_view, slope), rel=0.015)
 
 
 def test_the_table_changes_nothing_where_no_slope_was_lost_and_darkens_the_grazing_sea():
-    rough = load("nodes.rough_fresnel")
+    rough = load("nodes.sea.rough_fresnel")
     table = rough.table()
     assert table.shape == (rough.SIZE, rough.SIZE) and table.dtype == np.float32
     assert np.all(table[0] == 0.0)
@@ -49,7 +49,7 @@ def test_the_table_changes_nothing_where_no_slope_was_lost_and_darkens_the_grazi
 def test_toksvig_s_constants_are_the_bump_map_s():
     """A sharp read of the 8-bit map loses about the floor (bilinear reads between texels); the
     whole tile averaged loses the full share."""
-    rough = load("nodes.rough_fresnel")
+    rough = load("nodes.sea.rough_fresnel")
     bump = load("nodes.bump_map")
     size = 512  # packed_image.SIZE, the bump image's
     texels = np.round(bump.water_normal_map(size)[..., :3] * 255.0) / 255.0

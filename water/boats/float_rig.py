@@ -7,7 +7,7 @@ For a floating object the add-on makes, in a hidden collection `RIG_COLLECTION`:
   object's own constraints (a Follow Path). The pose cannot follow the object itself: Blender
   makes any reading of an object's transform wait for all its constraints, the float's too, so a
   pose placed from the object would close a dependency cycle;
-* a pose: a hidden mesh whose `Water Float Fit` modifier (`nodes/float_fit.py`) does the rest
+* a pose: a hidden mesh whose `Water Float Fit` modifier (`nodes/boats/float_fit.py`) does the rest
   each frame: its own points are the probes over the object's footprint (`footprint_math`), in
   the anchor's own space, each with its weights for the fitted plane; the modifier drops them
   onto the water's evaluated surface, straight down or up, onto a patch of it round them only
@@ -31,7 +31,8 @@ import math
 import bpy
 import numpy as np
 
-from ...nodes import SPECS, float_fit
+from ...nodes import SPECS
+from ...nodes.boats import float_fit
 from ...nodes.builder import ensure_group
 from ...nodes.ownership import is_local
 from .. import waves

@@ -22,7 +22,7 @@ import bpy
 import numpy as np
 
 from ...nodes import SPECS
-from ...nodes import keep_out as keep_out_spec
+from ...nodes.boats import keep_out as keep_out_spec
 from ...nodes.builder import ensure_group
 from ...nodes.ownership import is_local, is_original, mark, role_of
 from .. import kind

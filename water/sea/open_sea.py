@@ -4,7 +4,7 @@ Blender's Ocean modifier (FFT waves on the Phillips, Pierson-Moskowitz, JONSWAP 
 spectrum, with choppiness and foam) displaces the sea's mesh (`sea_mesh.py`); it has no shading
 and no horizon of its own. This module chooses its tile and resolution, drives its time by the
 scene's clock (a simple expression, no Python at render); `Water Sea Fade`
-(`nodes/sea_fade.py`) then flattens the far sea and marks the highest crests for the ocean
+(`nodes/sea/sea_fade.py`) then flattens the far sea and marks the highest crests for the ocean
 shading's whitecaps (`water_whitecaps`; the modifier's own foam is off: not read).
 
 Choices, from the wind speed V (m/s): the tile (`spatial_size`) holds TILE_WAVES lengths
@@ -25,11 +25,12 @@ import math
 import bpy
 import numpy as np
 
-from ...nodes import SPECS, sea_fade
+from ...nodes import SPECS
 from ...nodes.builder import ensure_group
 from ...nodes.material import drive_clock, drive_socket
-from ...nodes.ocean_material import ocean_nodes
 from ...nodes.ownership import role_of
+from ...nodes.sea import sea_fade
+from ...nodes.sea.ocean_material import ocean_nodes
 from ..editable import check_editable
 from ..errors import WaterError
 from ..waves import set_wave_input
@@ -342,7 +343,7 @@ def crest_height(obj):
 
 def whitecaps_input(material):
     """The ocean shading's `Whitecaps` input, or None."""
-    from ...nodes.ocean_material import ocean_nodes
+    from ...nodes.sea.ocean_material import ocean_nodes
 
     nodes = ocean_nodes(material)
     return nodes[1].inputs.get("Whitecaps") if nodes else None

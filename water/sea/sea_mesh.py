@@ -10,7 +10,7 @@ so the bump taps keep the seeds' ocean scale whatever the sea's size.
 
 import numpy as np
 
-from ...nodes.sea_fade import REST_ATTRIBUTE, UV_METRES
+from ...nodes.sea.sea_fade import REST_ATTRIBUTE, UV_METRES
 from ..grid import grid_mesh
 
 INNER_SHARE = 0.5  # of the points along an axis, evenly spaced around the centre

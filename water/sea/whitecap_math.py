@@ -38,7 +38,7 @@ def crest_speed(wind_speed):
 
 # The foam's streaks (Beaufort 6 and up: "foam blown in streaks along the direction of the wind",
 # dense from 9): the lace drawn out a times along the wind, 1 below STREAKS_FROM m/s, rising by
-# 1 every STREAKS_PER m/s, at most STREAKS_MOST (`ocean.STREAKS_INPUT`; 2 a^2 times longer than wide).
+# 1 every STREAKS_PER m/s, at most STREAKS_MOST (`ocean_parts.STREAKS_INPUT`; 2 a^2 times longer than wide).
 STREAKS_FROM = 9.0
 STREAKS_PER = 0.5
 STREAKS_MOST = 8.0

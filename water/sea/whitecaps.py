@@ -9,10 +9,10 @@ import math
 
 import bpy
 
-from ...nodes import sea_fade
 from ...nodes.material import drive_socket
-from ...nodes.ocean import FADE_END_INPUT, FADE_START_INPUT, STREAKS_INPUT
-from ...nodes.ocean_material import ocean_nodes
+from ...nodes.sea import sea_fade
+from ...nodes.sea.ocean_material import ocean_nodes
+from ...nodes.sea.ocean_parts import FADE_END_INPUT, FADE_START_INPUT, STREAKS_INPUT
 from ..waves import input_ids, input_path, set_wave_input
 from .whitecap_math import coverage_expression, crest_speed, streaks_expression
 

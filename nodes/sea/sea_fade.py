@@ -14,10 +14,10 @@ far from a normal spread: a few waves near the peak carry most of them). There t
 attribute `water_whitecaps` is 1, fading with distance like the waves (`water_crest` keeps the
 crests before the foam they leave behind is added): the ocean shading scatters whitecaps over
 these crests, as many as the wind raises, and past the fade as many again where it marks none
-(`ocean.py`).
+(`ocean_shade.py`).
 """
 
-from .spec import GroupSpec, Node, Socket, math, vmath
+from ..spec import GroupSpec, Node, Socket, math, vmath
 
 NAME = "Water Sea Fade"
 # 2: whitecaps from the crests' heights (were the Ocean modifier's own foam: blotches tens of
@@ -290,7 +290,7 @@ SPEC = GroupSpec(
             label=f"store '{WHITECAPS_ATTRIBUTE}'",
         ),
         # The UV map where the points are drawn: its slope across the screen stays the surface's
-        # own, however far the chop folds a crest over (the bump's reads, `ocean.py`).
+        # own, however far the chop folds a crest over (the bump's reads, `ocean_normal.py`).
         "drawn_uv": vmath(
             "MULTIPLY_ADD",
             6,

@@ -26,7 +26,7 @@ object's Y axis, so the pose object is turned half a turn about Z (its Y is the 
 X comes out along the plane's X): in the pose's own space, world (x, y, z) is (-x, -y, z).
 """
 
-from .spec import GroupSpec, Node, Socket, math, vmath
+from ..spec import GroupSpec, Node, Socket, math, vmath
 
 NAME = "Water Float Fit"
 WEIGHTS = "water_float_weights"  # on the pose's points: the probe's (height, slope x, slope y) weights

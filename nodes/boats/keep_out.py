@@ -8,7 +8,7 @@ the hull's height range whether it lies between its keel and its top. Hulls chai
 the `Dry` of the one before and passes on the larger.
 """
 
-from .spec import BUMP_IMAGE, GroupSpec, Node, Socket, math, vmath
+from ..spec import BUMP_IMAGE, GroupSpec, Node, Socket, math, vmath
 
 NAME = "Water Keep Out"
 

@@ -13,7 +13,7 @@ R(c, s) - R(c, 0): exactly 0 where nothing was lost.
 
 import numpy as np
 
-from .physics import WATER_IOR
+from ..physics import WATER_IOR
 
 SIZE = 64  # c from 0 to 1 along x, s from 0 to SLOPE_MAX along y
 SLOPE_MAX = 0.5  # rms slope each way at the table's top row (25 m/s is about 0.26)
@@ -83,6 +83,6 @@ def lookup(cos_view, slope_variance):
 LOST_FLOOR = 0.003
 LOST_FULL = 0.0803
 # The taps' mean square slope each way at Bump Strength 1 when combined as the seeds do
-# (`ocean.BUMP_SLOPE_COVARIANCE`'s mean diagonal); with Even Slopes 1 it is 1 before the wind
+# (`ocean_normal.BUMP_SLOPE_COVARIANCE`'s mean diagonal); with Even Slopes 1 it is 1 before the wind
 # scales it.
 SEEDS_SLOPE_VARIANCE = 0.013275

@@ -1,5 +1,5 @@
 """The ocean material: wave normal and bump, the sky looked up in the reflected
-direction, and the ocean colour (groups in `ocean.py`), with the open sea's
+direction, and the ocean colour (groups in `ocean_normal.py` and `ocean_shade.py`), with the open sea's
 whitecaps where the mesh carries them.
 
 The sky is reflected by the renderer itself: the shade's "+ Traced Sky" variant adds a sharp
@@ -17,10 +17,10 @@ import itertools
 
 import bpy
 
-from . import SPECS, ocean, sea_fade
-from .builder import ensure_group
-from .bump_image import ensure_bump_image
-from .material import (
+from .. import SPECS
+from ..builder import ensure_group
+from ..bump_image import ensure_bump_image
+from ..material import (
     drive_clock,
     drive_socket,
     drive_sun_inputs,
@@ -29,7 +29,8 @@ from .material import (
     new_node_material,
     trace_refraction,
 )
-from .ownership import VERSION_KEY, is_original, mark, role_of
+from ..ownership import VERSION_KEY, is_original, mark, role_of
+from . import ocean_normal, ocean_parts, ocean_shade, sea_fade
 
 OCEAN_NODE = "Water Ocean"
 NORMAL_NODE = "Water Ocean Normal"
@@ -78,10 +79,10 @@ CAUSTICS_OPTIONAL_SINCE = 6
 
 def _variant_of(role):
     """The parts of the shade variant named `role`, or None for no variant of ours."""
-    names = [part.name for part in ocean.FULL_SHADE_SPEC.parts]
+    names = [part.name for part in ocean_shade.FULL_SHADE_SPEC.parts]
     for size in range(len(names) + 1):
         for parts in itertools.combinations(names, size):
-            if ocean.FULL_SHADE_SPEC.variant(parts).name == role:
+            if ocean_shade.FULL_SHADE_SPEC.variant(parts).name == role:
                 return set(parts)
     return None
 
@@ -98,7 +99,7 @@ def retire_legacy_shades():
         parts = _variant_of(role_of(tree))
         if parts is None or "caustics" in parts or "caustics" not in tree.nodes:
             continue
-        role = ocean.FULL_SHADE_SPEC.variant(parts | {"caustics"}).name
+        role = ocean_shade.FULL_SHADE_SPEC.variant(parts | {"caustics"}).name
         tree.name = role
         mark(tree, role, version)
 
@@ -108,9 +109,9 @@ def make_ocean_material(name="Ocean", scene=None):
     caustics built in (`set_values` fits the shade's parts to its values)."""
     scene = scene or bpy.context.scene
     retire_legacy_shades()
-    normal_group = ensure_group(SPECS[ocean.NORMAL_NAME], SPECS, image=ensure_bump_image())
+    normal_group = ensure_group(SPECS[ocean_normal.NORMAL_NAME], SPECS, image=ensure_bump_image())
     # Whatever the world is, now or later, the renderer reflects it (the traced sky).
-    shade_group = ensure_group(ocean.FULL_SHADE_SPEC.variant({"traced_sky"}), SPECS)
+    shade_group = ensure_group(ocean_shade.FULL_SHADE_SPEC.variant({"traced_sky"}), SPECS)
     material = new_node_material(name)
     tree = material.node_tree
     normal = tree.nodes.new("ShaderNodeGroup")
@@ -119,11 +120,11 @@ def make_ocean_material(name="Ocean", scene=None):
     sky.name, sky.label, sky.location = SKY_NODE, "sky in the reflected direction", (-300, -150)
     shade = tree.nodes.new("ShaderNodeGroup")
     shade.node_tree, shade.name, shade.location, shade.width = shade_group, OCEAN_NODE, (0, 0), 220
-    shade.inputs[ocean.TRACED_SKY].default_value = 1.0
+    shade.inputs[ocean_shade.TRACED_SKY].default_value = 1.0
     output = tree.nodes.new("ShaderNodeOutputMaterial")
     output.location = (300, 0)
     tree.links.new(normal.outputs["Normal"], shade.inputs["Normal"])
-    tree.links.new(normal.outputs[ocean.UNRESOLVED_SLOPE], shade.inputs[ocean.UNRESOLVED_SLOPE])
+    tree.links.new(normal.outputs[ocean_parts.UNRESOLVED_SLOPE], shade.inputs[ocean_parts.UNRESOLVED_SLOPE])
     if lookup is not None:
         tree.links.new(normal.outputs["Reflection"], lookup)
     tree.links.new(sky.outputs[0], shade.inputs["Sky"])
@@ -158,5 +159,5 @@ def fit_shade_parts(material):
     if nodes is None:
         return False
     retire_legacy_shades()
-    spec = ocean.FULL_SHADE_SPEC
+    spec = ocean_shade.FULL_SHADE_SPEC
     return fit_node_parts(material, nodes[1], spec, lambda parts: ensure_group(spec.variant(parts), SPECS))

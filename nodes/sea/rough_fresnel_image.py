@@ -1,6 +1,6 @@
 """The rough Fresnel table as a Blender image: generated, packed (float), found by its mark."""
 
-from . import packed_image
+from .. import packed_image
 from .rough_fresnel import SIZE, TABLE_VERSION, table_rgba
 
 IMAGE_NAME = "Water Surface Rough Fresnel"
