@@ -276,7 +276,7 @@ def _low_sun(scene, to_sun, degrees=15.0):
 def test_in_the_picture_whitecaps_are_white(sea_scene, render, sun, height):
     """The final picture (issue 58): 15 m/s, a sun 15 degrees up behind the camera or ahead of
     it, three moments. From a boat 3 m up at least 1% of the sea within 35 m is whitecap foam
-    white in the picture, from 12 m up at least 2% of the sea, and some at every moment. The foam
+    white in the picture, from 12 m up at least 2% of the sea, and half that at every moment. The foam
     view only says which white is foam (ahead, the sun's glitter is white too). Before: from 3 m
     up frame 20 showed no white within 35 m, frame 120 4.5% in lines a few centimetres wide."""
     scene = sea_scene
@@ -305,8 +305,11 @@ def test_in_the_picture_whitecaps_are_white(sea_scene, render, sun, height):
         bpy.data.objects.remove(light)
     print(f"{height:g} m up, sun {sun}: white {np.round(shares, 4)} of the sea ({region.sum()} pixels)")
     assert region.sum() > 1000
-    assert np.mean(shares) >= (0.01 if height == 3.0 else 0.02)
-    assert min(shares) > 0.0
+    target = 0.01 if height == 3.0 else 0.02
+    # At every moment, not only while a rare big crest passes: the old whitecaps met the mean by
+    # frame 81's scratches (3 m up: 0.07%, 2.1%, 8.0%; 12 m up: 0.4%, 1.7%, 4.6%).
+    assert np.mean(shares) >= target
+    assert min(shares) >= 0.5 * target
 
 
 def test_a_crest_s_foam_fades_within_seconds_after_it_passes(scene):
