@@ -117,10 +117,10 @@ FADE_START_INPUT = "Fade Start"
 FADE_END_INPUT = "Fade End"
 FADE_NEVER = 1.0e6
 FAR_CAP_GAIN = 1.0 / LACE_COVER
-# The far bubbles are where either of two reads of the tile, B and B2, is low (min(B, B2) < t,
-# t = 1 - sqrt(1 - share)): one read alone repeats every tile width across the wind, long
-# parallel stripes seen from high up; B2's tile is drawn other ways (along and across the wind,
-# no simple ratio to B's), so the two together repeat nowhere in sight.
+# The far whitecaps are where either of two spot reads, B and B2 (`spots`), is low
+# (min(B, B2) < t, t = 1 - sqrt(1 - share)): B2's cells are drawn other ways (along and across
+# the wind, no simple ratio to B's), so far foam has no lattice of its own. (When B was a read of
+# the foam tile, one read alone repeated every tile width: parallel stripes from high up.)
 FAR_SECOND_READ = (1.27, 0.79)
 PICK_TILE = (37.0, 53.0)  # metres across and along the wind: no multiple of the other reads
 
