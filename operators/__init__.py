@@ -1,7 +1,7 @@
 """Operators, one job a module, grouped by family as `water/` is: what every water has here, the
 lake's own, the boats', the open sea's and the view from below in packages; the shared polls,
-properties and selection pass (`_poll`, `_props`, `_selected`) at the top. Registered in order,
-unregistered in reverse, with the old ids kept working (`_aliases`)."""
+properties, selection pass and switches (`_poll`, `_props`, `_selected`, `_switch`) at the top.
+Registered in order, unregistered in reverse, with the old ids kept working (`_aliases`)."""
 
 import bpy
 

@@ -286,11 +286,12 @@ def test_operator_panel_again_after_a_change_of_shape_and_let_in(scene):
     assert _own_data() == (["Water Dry Boat"], ["Water Keep Out (Water Dry Boat)"]), "made anew, not twice"
     assert keep_out.mask_out_of_date(box, water) is None
 
-    assert bpy.ops.object.water_let_in() == {"FINISHED"}
+    assert bpy.ops.object.water_keep_out(enable=False) == {"FINISHED"}  # the panel's Let In
     assert sorted(n.name for n in tree.nodes) == untouched
     assert tree.nodes["Material Output"].inputs["Surface"].links[0].from_node.name == "Water Surface"
     assert _own_data() == ([], [])
-    assert not bpy.ops.object.water_let_in.poll()
+    with pytest.raises(RuntimeError, match="No water is kept out of a selected object"):
+        bpy.ops.object.water_keep_out(enable=False)
 
 
 def test_nothing_to_keep_out_of_is_refused_with_a_reason(scene):

@@ -109,7 +109,7 @@ def test_the_add_operator_has_a_property_for_every_preset_key_with_its_range(sce
 # What floating offers, each with the API call that gives it and the operator that does.
 _OFFERS = {
     "floating": (lambda api, boat, water: api.float_on_water(boat, water, wake=False), "water_float"),
-    "wake": (lambda api, boat, water: api.add_wake_source(boat, water), "water_wake_add"),
+    "wake": (lambda api, boat, water: api.add_wake_source(boat, water), "water_wake"),
     "keep_out": (lambda api, boat, water: api.keep_water_out(boat, water), "water_keep_out"),
 }
 
@@ -160,7 +160,7 @@ def test_the_water_an_object_acts_on_is_picked_by_one_rule(waters, scene):
         with pytest.raises(error, match=why):
             call(stray)
     _activate(stray)
-    for operator in ("water_float", "water_wake_add", "water_keep_out"):
+    for operator in ("water_float", "water_wake", "water_keep_out"):
         with pytest.raises(RuntimeError, match=why):
             getattr(bpy.ops.object, operator)()
     boat = harness.add_cube(scene, (20.0, 0.0, 0.3), size=0.6, name="Boat")  # over the ocean

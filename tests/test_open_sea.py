@@ -358,7 +358,7 @@ def test_the_operator_floats_the_selection_on_the_selected_water_with_damped_til
             ratios.append(math.degrees(up.angle(Vector((0.0, 0.0, 1.0)))) / surface)
     print(f"damped tilt / surface tilt: {[round(r, 2) for r in ratios]}")
     assert ratios and all(0.4 < r < 0.6 for r in ratios)
-    assert bpy.ops.object.water_float_stop() == {"FINISHED"}
+    assert bpy.ops.object.water_float(enable=False) == {"FINISHED"}
     assert not cube.constraints
 
 

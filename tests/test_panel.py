@@ -4,22 +4,25 @@ object is active, the water too, as the README's "select the objects (and, if yo
 water)" says; their operators act on those objects and on the selected or active water.
 
 The panel's choice is `ui.boats.boat_tools_for`, and its own `draw` (run through test_repair's
-recording layout) draws what that says; the operators run on the real selection."""
+recording layout) draws what that says; the operators run on the real selection. Each tool is one
+switch (`object.water_<feature>` with `enable`): its on and off buttons are the one operator."""
 
 import bpy
 import pytest
-from test_repair import draw_panel
+from test_repair import Layout, draw_panel
 
 import harness
 
-BOAT_OPERATORS = (
-    "object.water_float",
-    "object.water_float_stop",
-    "object.water_keep_out",
-    "object.water_let_in",
-    "object.water_wake_add",
-    "object.water_wake_remove",
-)
+BOAT_OPERATORS = ("object.water_float", "object.water_keep_out", "object.water_wake")
+# Each tool's buttons, as the artist sees them: (operator, text, `enable`); "" is the operator's label.
+BOAT_BUTTONS = {
+    ("object.water_float", "", True),
+    ("object.water_float", "Stop", False),
+    ("object.water_keep_out", "", True),
+    ("object.water_keep_out", "Let In", False),
+    ("object.water_wake", "Add Wake", True),
+    ("object.water_wake", "Remove", False),
+}
 
 
 def _boats_ui():
@@ -38,6 +41,21 @@ def _operators(log):
     return {entry[1] for entry in log if entry[0] == "operator"}
 
 
+def _buttons(monkeypatch):
+    """Draws the panel; returns {(operator, text, the `enable` it sets)} of its buttons."""
+    drawn = []
+    operator = Layout.operator
+
+    def recording(self, idname, text="", icon="NONE", **options):
+        properties = operator(self, idname, text, icon, **options)
+        drawn.append((idname, text, properties))
+        return properties
+
+    monkeypatch.setattr(Layout, "operator", recording)
+    draw_panel()
+    return {(idname, text, getattr(properties, "enable", True)) for idname, text, properties in drawn}
+
+
 @pytest.fixture
 def lake_and_boat(scene):
     api = harness.addon("api")
@@ -46,14 +64,22 @@ def lake_and_boat(scene):
     return lake, boat
 
 
-def test_with_the_water_active_and_a_boat_selected_the_boat_tools_show_and_float_it(lake_and_boat):
+def test_with_the_water_active_and_a_boat_selected_the_boat_tools_show_and_float_it(
+    lake_and_boat, monkeypatch
+):
     lake, boat = lake_and_boat
     _select((boat, lake), active=lake)
     assert _boats_ui().boat_tools_for(bpy.context) == (("floating", "keep_out", "wake"), boat)
     log = draw_panel()
     assert "object.water_remove" in _operators(log), "the water's own settings still show"
     assert set(BOAT_OPERATORS) <= _operators(log)
-    for operator in ("water_float", "water_keep_out", "water_wake_add"):
+    assert BOAT_BUTTONS <= _buttons(monkeypatch), "on and off: one operator, `enable` set"
+    labels = {op: getattr(bpy.types, "OBJECT_OT_" + op.split(".")[1]).bl_label for op in BOAT_OPERATORS}
+    assert (
+        labels["object.water_float"] == "Float on Water"
+        and labels["object.water_keep_out"] == "Keep Water Out"
+    )
+    for operator in ("water_float", "water_keep_out", "water_wake"):
         assert getattr(bpy.ops.object, operator).poll(), operator
 
     assert bpy.ops.object.water_float(wake=False) == {"FINISHED"}
@@ -61,7 +87,7 @@ def test_with_the_water_active_and_a_boat_selected_the_boat_tools_show_and_float
     assert floating.floating_on(boat) == lake
     labels = [entry[1] for entry in draw_panel() if entry[0] == "label"]
     assert any(label.startswith("Floats on 'Lake'") for label in labels), "the boat's state, the water active"
-    assert bpy.ops.object.water_float_stop() == {"FINISHED"}
+    assert bpy.ops.object.water_float(enable=False) == {"FINISHED"}  # the panel's Stop
     assert floating.floating_on(boat) is None
 
 
@@ -102,8 +128,11 @@ def test_the_active_water_is_the_one_acted_on_even_unselected(scene):
     assert harness.addon("water.boats.keep_out").kept_out_of(boat, scene) == [lower]
     # The same through a context override: a selected water and another active one is refused.
     with bpy.context.temp_override(active_object=lower, selected_objects=[boat, upper]):
-        assert not bpy.ops.object.water_float.poll()
+        assert bpy.ops.object.water_float.poll(), "the boat floats: Stop may run"
         with pytest.raises(RuntimeError, match="Select one water at most"):
             bpy.ops.object.water_float()
+        assert not bpy.ops.object.water_wake.poll(), "no wake to take off, and two waters"
+        with pytest.raises(RuntimeError, match="Select one water at most"):
+            bpy.ops.object.water_wake()
     with bpy.context.temp_override(active_object=upper, selected_objects=[boat, upper]):
-        assert bpy.ops.object.water_wake_add.poll()
+        assert bpy.ops.object.water_wake.poll()

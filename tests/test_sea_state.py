@@ -242,7 +242,8 @@ def _swell_driver(sea):
 def test_the_swell_keys_through_the_operator_panel_and_api_and_height_0_removes_it(scene):
     """The add operator takes the three keys; the panel shows the swell and offers its operator,
     which (as `api.set_swell`) changes what it is given and keeps the rest; a swell the sea was
-    added without comes and goes with its height, its time driver with it; a lake refuses it."""
+    added without comes and goes with its height (or `enable`), its time driver with it; a lake
+    refuses it."""
     open_sea = harness.addon("water.sea.open_sea")
     assert _open_sea(scene, resolution=17, name="Calm") is not None
     assert open_sea.swell_modifier(bpy.data.objects["Calm"]) is None, "the preset's height 0: no swell"
@@ -281,6 +282,15 @@ def test_the_swell_keys_through_the_operator_panel_and_api_and_height_0_removes_
     assert read["sea_swell_period"] == pytest.approx(10.0, rel=0.01)
     assert read["sea_swell_direction"] == pytest.approx(np.array(SWELL) / np.hypot(*SWELL), abs=1e-3)
     assert read["sea_swell_height"] == pytest.approx(3.0, rel=0.25)
+    # The switch's off takes the swell away as height 0 does, without asking (no dialog).
+    assert bpy.ops.object.water_sea_swell("INVOKE_DEFAULT", enable=False) == {"FINISHED"}
+    assert open_sea.swell_modifier(sea) is None and not _swell_driver(sea)
+    assert open_sea.SWELL_PROPERTY not in sea
+    assert bpy.ops.object.water_sea_swell(enable=False) == {"FINISHED"}, "none to take: said, no error"
+    assert bpy.ops.object.water_sea_swell(sea_swell_height=2.0) == {"FINISHED"}
+    assert open_sea.swell_values(sea)["sea_swell_height"] == 2.0
+    assert bpy.ops.object.water_sea_swell(sea_swell_height=0.0) == {"FINISHED"}
+    assert open_sea.swell_modifier(sea) is None and not _swell_driver(sea)
     with pytest.raises(_api().PresetError, match="sea_swell_height"):
         _api().set_swell(sea, height="2")
     lake = _api().add_water(scene, size=4.0, mirror_setup=False, name="Lake").object

@@ -857,11 +857,12 @@ def test_the_operators_and_the_panel(scene):
     bpy.ops.object.select_all(action="DESELECT")
     water.select_set(True)
     bpy.context.view_layer.objects.active = water
-    assert not bpy.ops.object.water_wake_add.poll()
+    assert not bpy.ops.object.water_wake.poll(), "neither way: no object that leaves a wake selected"
     hull.select_set(True)
     bpy.context.view_layer.objects.active = hull
-    assert not bpy.ops.object.water_wake_remove.poll()
-    assert bpy.ops.object.water_wake_add(strength=0.5) == {"FINISHED"}
+    with pytest.raises(RuntimeError, match="No selected object leaves a wake"):
+        bpy.ops.object.water_wake(enable=False)  # the panel's Remove, nothing to remove
+    assert bpy.ops.object.water_wake(strength=0.5) == {"FINISHED"}
     wake = harness.addon("water.boats.wake")
     (modifier,) = wake.wake_modifiers(water)
     assert harness.addon("water.waves").get_wave_input(modifier, "Strength") == pytest.approx(0.5)
@@ -870,7 +871,7 @@ def test_the_operators_and_the_panel(scene):
     assert "The wake on 'Lake' is not baked: farms render it flat" in labels
     nodes = water.active_material.node_tree.nodes
     assert nodes["Material Output"].inputs["Surface"].links[0].from_node.name == "Water Wake Foam"
-    assert bpy.ops.object.water_wake_remove() == {"FINISHED"}
+    assert bpy.ops.object.water_wake(enable=False) == {"FINISHED"}
     assert wake.wake_modifiers(water) == [] and "Water Wake Foam" not in nodes
     assert nodes["Material Output"].inputs["Surface"].links[0].from_node.name == "Water Surface"
 

@@ -43,7 +43,7 @@ def _select(*objects):
     bpy.context.view_layer.objects.active = objects[0]
 
 
-@pytest.mark.parametrize("operator", ["water_float", "water_wake_add"])
+@pytest.mark.parametrize("operator", ["water_float", "water_wake"])
 def test_two_objects_selected_and_no_water_both_act_on_the_water_below(scene, operator):
     water = _api().add_water(scene, preset="lake", size=30.0, resolution=61, name="Lake").object
     boats = [_box(scene, f"Boat {i}", (-5.0 + 10.0 * i, 2.0, 0.0)) for i in range(2)]

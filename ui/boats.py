@@ -26,6 +26,13 @@ def boat_tools_for(context):
     return tuple(tool for tool in BOAT_TOOLS if kind.allows(active, tool)), boats[0]
 
 
+def _off(row, idname, text):
+    """A switch's off button: `idname` with `enable` off (`operators/_switch.py`)."""
+    button = row.operator(idname, text=text, icon="X")
+    if button is not None:  # None while the operator's poll refuses (linked data)
+        button.enable = False
+
+
 def draw_floating(layout, _context, obj):
     """Float the selected objects on the water below them (or the selected one), or stop;
     `obj`'s state (`boat_tools_for`)."""
@@ -33,7 +40,7 @@ def draw_floating(layout, _context, obj):
     box.label(text="Floating", icon="MOD_OCEAN")
     row = box.row(align=True)
     row.operator("object.water_float", icon="CON_SHRINKWRAP")
-    row.operator("object.water_float_stop", text="Stop", icon="X")
+    _off(row, "object.water_float", "Stop")
     water = floating.floating_on(obj) if obj else None
     if water is None:
         return
@@ -61,7 +68,7 @@ def draw_keep_out(layout, context, obj):
     box.label(text="Dry Inside", icon="MOD_BOOLEAN")
     row = box.row(align=True)
     row.operator("object.water_keep_out", icon="MOD_BOOLEAN")
-    row.operator("object.water_let_in", text="Let In", icon="X")
+    _off(row, "object.water_keep_out", "Let In")
     if obj is None:
         return
     for water in keep_out.kept_out_of(obj, context.scene):
@@ -77,8 +84,8 @@ def draw_wake(layout, context, obj):
     box = layout.box()
     box.label(text="Wake", icon="FORCE_HARMONIC")
     row = box.row(align=True)
-    row.operator("object.water_wake_add", icon="FORCE_HARMONIC")
-    row.operator("object.water_wake_remove", text="Remove", icon="X")
+    row.operator("object.water_wake", text="Add Wake", icon="FORCE_HARMONIC")
+    _off(row, "object.water_wake", "Remove")
     for modifier in wake.modifiers_of(obj) if obj is not None else ():
         box.label(text=f"Leaves a wake on '{modifier.id_data.name}'")
         note = wake.coarse_note(modifier)

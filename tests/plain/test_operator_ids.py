@@ -1,7 +1,8 @@
-"""Issue 59 point 3: every operator id is `object.water_<what>`; the old `object.water_surface_*`
-ids live only in the alias list (`operators/_aliases.py`, which keeps them working), and nothing
-else (the panel, the tools, the tests, the documents) calls them. Read from the sources; the
-Blender side is `tests/test_operator_ids.py`."""
+"""Issue 59 point 3: every operator id is `object.water_<what>`, and a switch is one operator with
+`enable`, never a pair; the old ids (`object.water_surface_*`, `RENAMED`, and those of one way of
+a switch, `FIXED`) live only in the alias list (`operators/_aliases.py`, which keeps them
+working), and nothing else (the panel, the tools, the tests, the documents) calls them. Read from
+the sources; the Blender side is `tests/test_operator_ids.py`."""
 
 import ast
 import re
@@ -23,12 +24,24 @@ def _assigns(node, name):
     return isinstance(node, ast.Assign) and [getattr(t, "id", None) for t in node.targets] == [name]
 
 
-def _renamed():
+def _literal(name):
     tree = ast.parse(ALIASES.read_text(encoding="utf-8"))
     for node in tree.body:
-        if _assigns(node, "RENAMED"):
+        if _assigns(node, name):
             return ast.literal_eval(node.value)
-    raise AssertionError("operators/_aliases.py has no RENAMED literal")
+    raise AssertionError(f"operators/_aliases.py has no {name} literal")
+
+
+def _renamed():
+    return _literal("RENAMED")
+
+
+def _fixed():
+    return _literal("FIXED")
+
+
+def _old_ids():
+    return {*_renamed(), *_fixed()}
 
 
 def _idnames():
@@ -62,8 +75,50 @@ def test_each_old_id_aliases_a_real_operator_once():
     assert not missing, f"aliases of no operator: {missing}"
 
 
+def test_each_fixed_old_id_is_one_way_of_a_switch_and_each_way_once():
+    fixed, idnames, renamed = _fixed(), _idnames(), _renamed()
+    assert fixed and not set(fixed) & set(idnames), "an old id is an alias, not an operator's bl_idname"
+    assert not set(fixed) & set(renamed)
+    ways = set()
+    for old, (new, values, label) in fixed.items():
+        assert re.fullmatch(r"object\.water_[a-z]+(_[a-z]+)*", old), old
+        assert new in idnames, f"{old}: alias of no operator {new}"
+        assert values in ({"enable": True}, {"enable": False}), f"{old}: a switch's way is all it fixes"
+        assert isinstance(label, str) and label, old
+        assert (new, values["enable"]) not in ways, f"two old ids for one way of {new}"
+        ways.add((new, values["enable"]))
+        source = (ROOT / idnames[new]).read_text(encoding="utf-8")
+        assert "enable: bpy.props.BoolProperty(" in source, f"{new} has no `enable`"
+
+
+# Operator names that say one way of a switch: a pair, where one operator with `enable` is asked.
+ONE_WAY = re.compile(r"_(stop|remove|let_in|off|disable|add|on|enable|start)$")
+# The actions named so that are no switch's way: what each does, and why it has no other way.
+ACTIONS = {
+    "object.water_add": "makes a new water, no switch of one",
+    "object.water_remove": "takes a whole water away, and all made for it",
+    "object.water_waves_add": "adds the Water Waves modifier (the modifier stack takes it off)",
+    "object.water_preset_add": "saves the values as a user preset, a file",
+    "object.water_preset_remove": "deletes a user preset's file",
+}
+
+
+def test_no_switch_is_a_pair_of_operators():
+    """CONTRIBUTING's "Adding a feature": a switch is one operator `object.water_<feature>` with
+    `enable`; an operator named for one way (`*_stop`, `*_remove`, `*_let_in`, ...) is an action
+    listed in `ACTIONS` with why, or an old id in `operators/_aliases.py`."""
+    idnames = _idnames()
+    one_way = sorted(idname for idname in idnames if ONE_WAY.search(idname) and idname not in ACTIONS)
+    assert not one_way, (
+        f"one way of a switch (make it `enable` of one operator, old ids in _aliases.FIXED): {one_way}"
+    )
+    gone = sorted(set(ACTIONS) - set(idnames))
+    assert not gone, f"no such operator any more: take it off ACTIONS: {gone}"
+
+
 def test_nothing_but_the_alias_list_calls_an_old_id():
-    pattern = re.compile(r"water_surface_(" + "|".join(old[len(OLD) :] for old in _renamed()) + r")\b")
+    names = sorted(old.split(".")[1] for old in _old_ids())
+    pattern = re.compile(r"(" + "|".join(names) + r")\b")
     places = [ROOT / name for name in ("api.py", "cli.py", "README.md", "CONTRIBUTING.md")]
     for folder in ("operators", "ui", "water", "nodes", "tools", "tests", "bench", "docs"):
         places += sorted((ROOT / folder).rglob("*.py")) + sorted((ROOT / folder).rglob("*.md"))
