@@ -97,5 +97,3 @@ SPEC = GroupSpec(
         ("coverage:Value", "output:Coverage"),
     ),
 )
-
-# The optional parts: each is built only into the variants of the group that use it (the
