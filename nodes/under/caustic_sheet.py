@@ -10,7 +10,7 @@ SHEET_DROP = 0.01  # metres (the water's units): the sheet under the surface, wh
 
 SPEC = GroupSpec(
     name=NAME,
-    version=2,  # 2: Every Placement (a sheet for collection instances' placements)
+    version=3,  # 2: Every Placement (a sheet for collection instances' placements); 3: no rays from high up
     description="A copy of a water's surface just under it, for the caustic light (`Water Caustic "
     "Light`); made only while the camera is under the water",
     tree_type="GeometryNodeTree",

@@ -175,7 +175,7 @@ _MENISCUS_LINKS = (
 
 SPEC = GroupSpec(
     name=NAME,
-    version=4,  # 4: Every Placement (a body for collection instances' placements)
+    version=5,  # 4: Every Placement (a body for collection instances' placements); 5: no rays from high up
     description="The body of water under a water's surface, for its underwater fog; empty while the "
     "camera is well above the water",
     tree_type="GeometryNodeTree",
