@@ -23,6 +23,12 @@ class _Heard:
         self.message = message
 
 
+def way_allowed(cls, enable, context):
+    """Whether the way `enable` of the switch `cls` may run: what its own poll was before the two
+    ways became one operator (the panel greys each way's button by it)."""
+    return bool(cls.enable_polls[enable](_Heard(), context))
+
+
 def refused_way(operator, context):
     """Where the way `operator.enable` asks may not run (`either_way` let the other through):
     reports why, in the words of its poll, and returns {"CANCELLED"}; else None."""

@@ -48,12 +48,28 @@ def _buttons(monkeypatch):
 
     def recording(self, idname, text="", icon="NONE", **options):
         properties = operator(self, idname, text, icon, **options)
-        drawn.append((idname, text, properties))
+        drawn.append((idname, text, properties, getattr(self, "enabled", True)))
         return properties
 
     monkeypatch.setattr(Layout, "operator", recording)
     draw_panel()
-    return {(idname, text, getattr(properties, "enable", True)) for idname, text, properties in drawn}
+    return {(idname, text, getattr(properties, "enable", True)) for idname, text, properties, _ in drawn}
+
+
+def _greyed(monkeypatch):
+    """Draws the panel; returns the switches' ways whose buttons are greyed: {(operator, enable)}."""
+    drawn = []
+    operator = Layout.operator
+
+    def recording(self, idname, text="", icon="NONE", **options):
+        properties = operator(self, idname, text, icon, **options)
+        drawn.append((idname, properties, getattr(self, "enabled", True)))
+        return properties
+
+    monkeypatch.setattr(Layout, "operator", recording)
+    draw_panel()
+    monkeypatch.setattr(Layout, "operator", operator)
+    return {(idname, getattr(props, "enable", True)) for idname, props, enabled in drawn if not enabled}
 
 
 @pytest.fixture
@@ -81,8 +97,12 @@ def test_with_the_water_active_and_a_boat_selected_the_boat_tools_show_and_float
     )
     for operator in ("water_float", "water_keep_out", "water_wake"):
         assert getattr(bpy.ops.object, operator).poll(), operator
+    # Each way's button greyed where that way may not run, as the two operators' were.
+    off_ways = {(op, False) for op in BOAT_OPERATORS}
+    assert _greyed(monkeypatch) == off_ways, "nothing floats, is kept dry or leaves a wake yet"
 
     assert bpy.ops.object.water_float(wake=False) == {"FINISHED"}
+    assert _greyed(monkeypatch) == off_ways - {("object.water_float", False)}, "Stop, once it floats"
     floating = harness.addon("water.boats.floating")
     assert floating.floating_on(boat) == lake
     labels = [entry[1] for entry in draw_panel() if entry[0] == "label"]

@@ -1,6 +1,10 @@
 """The boat tools in the panel (floating, keep-out, wake) for the selected objects that are not
 water, whichever object is active (`boat_tools_for`)."""
 
+from ..operators import _switch
+from ..operators.boats.floating import OBJECT_OT_water_float
+from ..operators.boats.keep_out import OBJECT_OT_water_keep_out
+from ..operators.boats.wake import OBJECT_OT_water_wake
 from ..water import kind
 from ..water.boats import floating, keep_out, wake
 from ..water.values import is_water
@@ -26,21 +30,25 @@ def boat_tools_for(context):
     return tuple(tool for tool in BOAT_TOOLS if kind.allows(active, tool)), boats[0]
 
 
-def _off(row, idname, text):
-    """A switch's off button: `idname` with `enable` off (`operators/_switch.py`)."""
-    button = row.operator(idname, text=text, icon="X")
-    if button is not None:  # None while the operator's poll refuses (linked data)
-        button.enable = False
+def _switch_buttons(row, context, cls, on_text, on_icon, off_text):
+    """A switch's on and off buttons (`operators/_switch.py`), each greyed where its way may not
+    run, as the two operators' buttons were; `on_text` None: the operator's own label."""
+    for enable, text, icon in ((True, on_text, on_icon), (False, off_text, "X")):
+        part = row.row(align=True)
+        part.enabled = _switch.way_allowed(cls, enable, context)
+        named = {} if text is None else {"text": text}  # text="" would draw no label at all
+        button = part.operator(cls.bl_idname, icon=icon, **named)
+        if button is not None:  # None while the operator's poll refuses (linked data)
+            button.enable = enable
 
 
-def draw_floating(layout, _context, obj):
+def draw_floating(layout, context, obj):
     """Float the selected objects on the water below them (or the selected one), or stop;
     `obj`'s state (`boat_tools_for`)."""
     box = layout.box()
     box.label(text="Floating", icon="MOD_OCEAN")
     row = box.row(align=True)
-    row.operator("object.water_float", icon="CON_SHRINKWRAP")
-    _off(row, "object.water_float", "Stop")
+    _switch_buttons(row, context, OBJECT_OT_water_float, None, "CON_SHRINKWRAP", "Stop")
     water = floating.floating_on(obj) if obj else None
     if water is None:
         return
@@ -67,8 +75,7 @@ def draw_keep_out(layout, context, obj):
     box = layout.box()
     box.label(text="Dry Inside", icon="MOD_BOOLEAN")
     row = box.row(align=True)
-    row.operator("object.water_keep_out", icon="MOD_BOOLEAN")
-    _off(row, "object.water_keep_out", "Let In")
+    _switch_buttons(row, context, OBJECT_OT_water_keep_out, None, "MOD_BOOLEAN", "Let In")
     if obj is None:
         return
     for water in keep_out.kept_out_of(obj, context.scene):
@@ -84,8 +91,7 @@ def draw_wake(layout, context, obj):
     box = layout.box()
     box.label(text="Wake", icon="FORCE_HARMONIC")
     row = box.row(align=True)
-    row.operator("object.water_wake", text="Add Wake", icon="FORCE_HARMONIC")
-    _off(row, "object.water_wake", "Remove")
+    _switch_buttons(row, context, OBJECT_OT_water_wake, "Add Wake", "FORCE_HARMONIC", "Remove")
     for modifier in wake.modifiers_of(obj) if obj is not None else ():
         box.label(text=f"Leaves a wake on '{modifier.id_data.name}'")
         note = wake.coarse_note(modifier)
