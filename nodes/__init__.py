@@ -5,7 +5,7 @@ This package's descriptions (`SPECS`) are plain data and import without Blender;
 """
 
 from . import bump_uv, caustics, underside, water_waves, wind_frame
-from .boats import float_fit, keep_out, wake
+from .boats import float_fit, keep_out, wake, wake_foam_cover
 from .lake import water_surface
 from .sea import ocean_normal, ocean_shade, sea_fade
 from .surroundings import surroundings, surroundings_sample
@@ -27,6 +27,7 @@ SPECS = {
         surroundings_sample.SPEC,
         keep_out.SPEC,
         wake.SPEC,
+        wake_foam_cover.SPEC,
         float_fit.SPEC,
         underwater_fog.SPEC,
         meniscus.SPEC,

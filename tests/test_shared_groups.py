@@ -84,10 +84,11 @@ def _incoming(scene, camera, du=0.0, dv=0.0):
     return -rays / np.linalg.norm(rays, axis=-1, keepdims=True)
 
 
-def _faces(scene, camera, facing_camera):
+def _faces(scene, camera, facing_camera, scale=1.0):
     """A mesh object of SIZE x SIZE faces, face r * SIZE + c seen exactly on pixel (r, c), wound to
-    face the camera where `facing_camera` (SIZE, SIZE) is true, away from it elsewhere."""
-    corners = _to_world(camera, _frame(scene, camera, corners=True)).reshape(-1, 3)
+    face the camera where `facing_camera` (SIZE, SIZE) is true, away from it elsewhere; the object
+    scaled by `scale` (its own coordinates the world's / `scale`)."""
+    corners = _to_world(camera, _frame(scene, camera, corners=True)).reshape(-1, 3) / scale
     row, col = np.mgrid[0:SIZE, 0:SIZE]
     top_left = row * (SIZE + 1) + col
     # Seen from the camera (x right, y up), top left, bottom left, bottom right, top right runs
@@ -98,6 +99,7 @@ def _faces(scene, camera, facing_camera):
     mesh.from_pydata(corners.tolist(), [], quads.tolist())
     mesh.polygons.foreach_set("use_smooth", np.zeros(len(mesh.polygons), dtype=bool))
     obj = bpy.data.objects.new("test: one face a pixel", mesh)
+    obj.scale = (scale,) * 3
     scene.collection.objects.link(obj)
     return obj
 
@@ -110,16 +112,18 @@ def _face_attribute(mesh, name, values):
     return vector
 
 
-def _evaluate(render, made, group, fed, outputs=None, facing_camera=None, uv=None, attributes=None):
+def _evaluate(
+    render, made, group, fed, outputs=None, facing_camera=None, uv=None, attributes=None, scale=1.0
+):
     """Renders `group` alone on one face a pixel: its inputs named in `fed` take each face's value
     ((SIZE, SIZE) floats or (SIZE, SIZE, 3) vectors, row 0 at the top); `uv` (SIZE, SIZE, 2) is
     the faces' UV map and `attributes` more face attributes by name, for the group to read.
-    `made` is `_scene()`'s scene and camera. Returns each of `outputs` (default all) as
-    (SIZE, SIZE, 3) floats (a float output grey)."""
+    `made` is `_scene()`'s scene and camera; `scale` the faces' object's (`_faces`). Returns each of
+    `outputs` (default all) as (SIZE, SIZE, 3) floats (a float output grey)."""
     scene, camera = made
     if facing_camera is None:
         facing_camera = np.ones((SIZE, SIZE), dtype=bool)
-    obj = _faces(scene, camera, facing_camera)
+    obj = _faces(scene, camera, facing_camera, scale)
     mesh = obj.data
     material = bpy.data.materials.new("test: " + group.name)
     if bpy.app.version < (5, 0, 0):
@@ -358,13 +362,17 @@ def _foam_model(tile, where, width, amount, distance, flag):
     return np.clip(amount * np.clip((b + f - 1.0) / 0.25, 0.0, 1.0) * flag, 0.0, 1.0)
 
 
-def _check_foam_coverage(render, made, group):
-    where, width, amount, distance, flag = _foam_field(np.random.default_rng(4))
-    (tile_node,) = [node for node in group.nodes if node.type == "TEX_IMAGE"]
-    image = tile_node.image
+def _tile(group):
+    """The foam tile the group reads (H, W, 3), row 0 at v = 0."""
+    image = {node.image for node in group.nodes if node.type == "TEX_IMAGE"}.pop()
     tile = np.empty(image.size[0] * image.size[1] * 4, dtype=np.float32)
     image.pixels.foreach_get(tile)
-    tile = tile.reshape(image.size[1], image.size[0], 4)[..., :3].astype(np.float64)
+    return tile.reshape(image.size[1], image.size[0], 4)[..., :3].astype(np.float64)
+
+
+def _check_foam_coverage(render, made, group):
+    where, width, amount, distance, flag = _foam_field(np.random.default_rng(4))
+    tile = _tile(group)
     fed = {"Vector": where, "Foam Width": width, "Foam Amount": amount}
     rendered = _evaluate(
         render, made, group, fed, outputs=["Coverage"], attributes={SHORE: distance, FLAG: flag}
@@ -388,3 +396,74 @@ def test_the_foam_coverage_is_the_tile_thresholded_by_the_falloff_from_the_water
     group's foam tile read bilinearly with repeat; within 1e-4 (measured: 5e-6)."""
     made = _scene()
     _check_foam_coverage(render, made, _built("foam_coverage"))
+
+
+def _nearest(tile, uv):
+    """The tile read at `uv` (..., 2) with repeat, no filtering (Closest): the texel holding it."""
+    height, width = tile.shape[:2]
+    return tile[
+        np.floor(uv[..., 1] * height).astype(np.int64) % height,
+        np.floor(uv[..., 0] * width).astype(np.int64) % width,
+    ]
+
+
+def _wake_cover_model(tile, where, foam):
+    """nodes/boats/wake_foam_cover.py's rule, written out: g = clamp((f^0.35 - c) / (1 - c)),
+    c = 0.005^0.35; b = 0.35 lace + 0.65 middles, the tile read nearest at `where` / 11 m and at
+    `where` turned 0.5 rad about z / 37 m; cover = clamp((b + 1.25 g - 1) / 0.25)."""
+    cut = 0.005**0.35
+    g = np.clip((foam**0.35 - cut) / (1.0 - cut), 0.0, 1.0)
+    c, s = math.cos(0.5), math.sin(0.5)
+    turned = np.stack([where[..., 0] * c - where[..., 1] * s, where[..., 0] * s + where[..., 1] * c], axis=-1)
+    lace = _nearest(tile, where[..., :2] / 11.0)[..., 0]
+    middles = 1.0 - _nearest(tile, turned / 37.0)[..., 0]
+    return np.clip((0.35 * lace + 0.65 * middles + 1.25 * g - 1.0) / 0.25, 0.0, 1.0)
+
+
+def test_the_wake_foam_cover_is_the_tile_thresholded_by_the_raised_foam_amount(addon, render):
+    """Issue 58 point 4: `Water Wake Foam Cover` alone, over 38 m of the water's own space (faces
+    0.6 m apart, where its two reads of the tile, 11 m and 37 m turned 0.5 rad, both vary) and
+    foam amounts 0 to 1 (some 0, some 1, some about the 0.005 where the wake stops storing foam):
+    Cover is numpy's clamp((b + 1.25 g - 1) / 0.25) with g = clamp((f^0.35 - c) / (1 - c)),
+    c = 0.005^0.35, b = 0.35 lace + 0.65 turned bubble middles, both read nearest, within 1e-4
+    of numpy's at the pixel's centre or at a point of its 0.01 px filter (a nearest read jumps a
+    texel within it)."""
+    made = _scene()
+    scene, camera = made
+    group = _built("boats.wake_foam_cover")
+    rng = np.random.default_rng(8)
+    foam = rng.uniform(0.0, 1.0, (SIZE, SIZE)) ** 2
+    pick = rng.uniform(size=(SIZE, SIZE))
+    foam[pick < 0.1] = 0.0
+    foam[pick > 0.9] = 1.0
+    foam[(pick > 0.45) & (pick < 0.5)] = 0.005 * rng.uniform(
+        0.5, 2.0, int(((pick > 0.45) & (pick < 0.5)).sum())
+    )
+    foam = _stored(foam)
+    spacing = 0.6  # metres of the water's own space a face
+    scale = np.linalg.norm(_frame(scene, camera)[0, 1] - _frame(scene, camera)[0, 0]) / spacing
+    attribute = harness.addon("nodes.boats.wake_parts").FOAM_ATTRIBUTE
+    rendered = _evaluate(
+        render, made, group, {}, outputs=["Cover"], attributes={attribute: foam}, scale=scale
+    )
+    cover = rendered["Cover"][..., 0]
+    models = [
+        _wake_cover_model(_tile(group), _to_world(camera, _frame(scene, camera, du, dv)) / scale, foam)
+        for du in (-0.005, 0.0, 0.005)
+        for dv in (-0.005, 0.0, 0.005)
+    ]
+    centre = models[4]
+    low, high = np.min(models, axis=0), np.max(models, axis=0)
+    error = np.maximum(np.maximum(low - cover, cover - high), 0.0)
+    at_centre = np.abs(cover - centre) < 1e-4
+    print(
+        f"wake foam cover: worst {error.max():.2e} off numpy's within the filter; {at_centre.mean():.3f} "
+        f"of pixels at the centre's; covered {centre.mean():.3f}, {int(((centre > 0) & (centre < 1)).sum())} "
+        f"px on the ramp, {int((centre == 0).sum())} bare, {int((centre == 1).sum())} whole"
+    )
+    assert error.max() < 1e-4 and at_centre.mean() > 0.9
+    assert (
+        ((centre > 0) & (centre < 1)).sum() > 200 and (centre == 0).sum() > 300 and (centre == 1).sum() > 300
+    )
+    # The amount's floor: at 0.005 and below the wake's foam covers nothing.
+    assert cover[foam <= 0.005].max() < 1e-4

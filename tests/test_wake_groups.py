@@ -307,7 +307,7 @@ def _segment_distance(p, start, end):
 def _foam_model(p, trail, times, speeds, foot, now, last, heading, speed, length, beam, fade, before):
     """Foam as docs/MODEL.md says: round the hull (within half its beam of the line from stern to
     bow, falling to nothing a quarter beam further, x its speed up to 1 m/s) and along the
-    trail's line (a Gaussian B / 3 wide, widening 0.1 m/s with age, x 0.7, fading over Foam Fade,
+    trail's line (a Gaussian B / 3 wide, widening 0.25 m/s with age, x 0.7, fading over Foam Fade,
     x the speed it had), over the foam there before."""
     v = p - last
     along = np.clip(v @ heading, -length / 2, length / 2)
@@ -320,7 +320,7 @@ def _foam_model(p, trail, times, speeds, foot, now, last, heading, speed, length
         _segment_distance(p, at, trail[np.clip(foot + 1, 0, n - 1)]),
     )
     age = now - times[foot]
-    width = beam / 3 + 0.1 * age
+    width = beam / 3 + 0.25 * age
     weight = 0.7 * np.exp(-age / fade) * np.clip(speeds[foot], 0.0, 1.0)
     return np.maximum(before, np.maximum(hull, np.exp(-((line / width) ** 2)) * weight)), line
 

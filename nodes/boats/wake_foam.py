@@ -2,14 +2,17 @@
 
 Round the hull where it moves through the water, and along the track behind it, drifted with
 `Drift` (metres a second, downwind: `Water Wake` drifts the track's points, the `Trail`),
-spreading and fading with time; the larger of this wake's and that of any wake before it
-(`water_wake_foam`), a field the wake stores.
+spreading (SPREAD) and fading with time; the larger of this wake's and that of any wake before it
+(`water_wake_foam`), a field the wake stores. The material breaks it into patches and lace
+(`wake_foam_cover.py`).
 """
 
 from ..spec import GroupSpec, Node, Socket, math, vmath
 from .wake_parts import FOAM_ATTRIBUTE, clamped_sample, merge, named, sample
 
 NAME = "Water Wake Foam"
+# m/s: how fast the trail's foam spreads across it (was 0.1: it hardly widened behind the boat)
+SPREAD = 0.25
 
 
 def _segment_distance(n, column):
@@ -157,7 +160,7 @@ def _trail_foam_nodes():
         "f_time": named("wake_time", "FLOAT", 17, "when each was"),
         "f_speed": named("wake_speed", "FLOAT", 17, "its speed then"),
         "d_age": math("SUBTRACT", 18, "each track point's age"),
-        "d_spread": math("MULTIPLY", 23, "0.1 m/s x age", b=0.1),
+        "d_spread": math("MULTIPLY", 23, "SPREAD x age", b=SPREAD),
         "third_beam": math("MULTIPLY", 23, "B / 3", b=1.0 / 3.0),
         "d_width": math("ADD", 24, "B / 3 + spread"),
         "d_ratio": math("DIVIDE", 25, "in widths"),
@@ -212,7 +215,7 @@ def _trail_foam_nodes():
 _NODES, _LINKS = merge(_hull_foam_nodes(), _trail_line_nodes(), _trail_foam_nodes())
 SPEC = GroupSpec(
     name=NAME,
-    version=1,
+    version=2,  # 2: the trail spreads 0.25 m/s, not 0.1
     description="Foam round a moving hull and along its drifted trail, widening and fading with "
     "age, over the foam of wakes before",
     tree_type="GeometryNodeTree",

@@ -10,9 +10,12 @@ searches run only inside it.
 
 from ..physics import KELVIN_TAN, KELVIN_ZONE_TAN
 from ..spec import GroupSpec, Node, Socket, math, vmath
+from .wake_foam import SPREAD
 from .wake_parts import box_test, merge, named, sample, store
 
 NAME = "Water Wake Zone"
+# How far across its line, per second of Foam Fade, the trail's foam can reach (`_band_nodes`).
+FOAM_REACH = 4.23 * SPREAD
 
 
 def _chord_nodes():
@@ -86,6 +89,10 @@ def _wedge_nodes():
         "w1": math("ADD", 48, "the wedge's width at the object"),
         "ahead": math("MULTIPLY_ADD", 47, "L / 2 + beam + spread + 2 m", b=0.5),
         "s_lo": math("SUBTRACT", 49, "from ahead of the bow"),
+        # Past the oldest point as far as its foam can reach (a young track's start, 4.23 s Foam
+        # Fade across its line at most), so the box holds the foam band's end.
+        "foam_spread": math("MULTIPLY_ADD", 45, "4.23 s x Foam Fade + 2 m", b=FOAM_REACH, c=2.0),
+        "beam_foam": math("ADD", 46, "beam + that"),
         "s_hi": math("ADD", 49, "to past the oldest"),
         # A bent track's first arms reach past its oldest point along the chord (its heading
         # there turned from the chord's): by as much as it strays.
@@ -116,8 +123,11 @@ def _wedge_nodes():
         ("beam_spread:Value", "ahead:#2"),
         ("span:Min", "s_lo:#0"),
         ("ahead:Value", "s_lo:#1"),
+        ("input:Foam Fade", "foam_spread:#0"),
+        ("input:Beam", "beam_foam:#0"),
+        ("foam_spread:Value", "beam_foam:#1"),
         ("span:Max", "s_hi:#0"),
-        ("beam_spread:Value", "s_hi:#1"),
+        ("beam_foam:Value", "s_hi:#1"),
         ("s_hi:Value", "s_hi_bent:#0"),
         ("w0:Value", "s_hi_bent:#1"),
     )
@@ -127,10 +137,11 @@ def _wedge_nodes():
 def _band_nodes():
     """The trail foam's band: how far across its line and how far along the track the foam reaches."""
     nodes = {
-        # The trail's foam, 0.7 exp(-age / Foam Fade) exp(-(d / w)²) with w = B / 3 + 0.1 m/s x
-        # age, is above 0.005 within 0.73 B + 0.42 m/s x Foam Fade of its line (at most, over its
-        # ages), and only while younger than ln(140) = 4.94 Foam Fades; the hull's within 0.75 B.
-        "foam_m": math("MULTIPLY_ADD", 46, "trail's reach: 0.42 m/s x Foam Fade + 1 m", b=0.42, c=1.0),
+        # The trail's foam, 0.7 exp(-age / Foam Fade) exp(-(d / w)²) with w = B / 3 + s age (s =
+        # wake_foam.SPREAD, 0.25 m/s), is above 0.005 within 0.74 B + 4.23 s Foam Fade of its line
+        # (at most, over its ages: (B / 3 + s F x) sqrt(ln 140 - x) is largest at x = 3.29), and only
+        # while younger than ln(140) = 4.94 Foam Fades; the hull's within 0.75 B.
+        "foam_m": math("MULTIPLY_ADD", 46, "trail's reach: 4.23 s x Foam Fade + 1 m", b=FOAM_REACH, c=1.0),
         "foam_b": math("MULTIPLY", 46, "0.75 B", b=0.75),
         "foam_mb": math("ADD", 47, "+ 0.75 B"),
         "fb_oldest_t": sample("FLOAT", 46, "the oldest point's time"),
@@ -373,7 +384,7 @@ _NODES, _LINKS = merge(
 )
 SPEC = GroupSpec(
     name=NAME,
-    version=1,
+    version=2,  # 2: the box and band hold the trail's foam spreading at wake_foam.SPREAD
     description="Where a wake can show: the Kelvin wedge round the track (its chord, how far it strays, "
     "how much longer it is), the rings' box and the foam's band, stored as wake_zone (0 none, "
     "1 waves, 2 waves and foam) on the points in the box round them, the others left as they are",

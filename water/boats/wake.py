@@ -8,9 +8,10 @@ object does before it floats, and reading the object itself would make a depende
 water waiting on the object that waits on the water). The hull's length, beam and draft come
 from its float's footprint, else from its bounds.
 
-The material shows the foam (`water_wake_foam`) through one Mix Shader ("Water Wake Foam") with an
-unlit white foam (an Emission), put where the water's shader feeds the output (inside the keep-out, so
-a dry hull stays dry): the lake and the ocean shading alike.
+The material shows the foam through one Mix Shader ("Water Wake Foam") with an unlit white foam (an
+Emission), put where the water's shader feeds the output (inside the keep-out, so a dry hull stays
+dry): the lake and the ocean shading alike. Its factor is `Water Wake Foam Cover`'s: the stored
+amount (`water_wake_foam`) thresholding the foam tile, solid where fresh, patches and lace where thin.
 """
 
 import hashlib
@@ -22,6 +23,7 @@ import numpy as np
 from ...nodes import SPECS
 from ...nodes import material as material_spec
 from ...nodes.boats import wake as wake_spec
+from ...nodes.boats import wake_foam_cover
 from ...nodes.builder import ensure_group
 from ...nodes.ownership import is_local, role_of
 from ...presets import schema
@@ -231,10 +233,27 @@ def _hide_foam_when_unused(water):
     hide_foam(material)
 
 
+def _foam_cover(tree, mix):
+    """The `Water Wake Foam Cover` node feeding `mix`'s factor (named FOAM_READ)."""
+    cover = tree.nodes.new("ShaderNodeGroup")
+    cover.node_tree = ensure_group(wake_foam_cover.SPEC, SPECS)
+    cover.name, cover.label = FOAM_READ, "wake foam cover (0..1)"
+    cover.location = (mix.location.x - 300, mix.location.y + 150)
+    tree.links.new(cover.outputs["Cover"], mix.inputs["Fac"])
+    return cover
+
+
 def show_foam(material):
-    """The foam mix in `material` (made when missing): the wake's foam over the water's shader."""
+    """The foam mix in `material` (made when missing): the wake's foam over the water's shader. A
+    mix from before the foam broke up (its factor the stored amount as it is) gets the cover."""
     tree = material.node_tree
-    if tree.nodes.get(FOAM_MIX) is not None:
+    mix = tree.nodes.get(FOAM_MIX)
+    if mix is not None:
+        read = tree.nodes.get(FOAM_READ)
+        if read is not None and read.bl_idname == "ShaderNodeAttribute" and is_local(material):
+            location = read.location.copy()
+            tree.nodes.remove(read)
+            _foam_cover(tree, mix).location = location
         return
     target = keep_out.water_shader_input(material)
     if target is None or not target.is_linked:
@@ -252,13 +271,9 @@ def show_foam(material):
     foam.inputs["Color"].default_value = FOAM_COLOR
     foam.inputs["Strength"].default_value = 1.0
     foam.location = (mix.location.x - 300, mix.location.y - 150)
-    amount = tree.nodes.new("ShaderNodeAttribute")
-    amount.name, amount.label = FOAM_READ, "wake foam (0..1)"
-    amount.attribute_type, amount.attribute_name = "GEOMETRY", wake_spec.FOAM_ATTRIBUTE
-    amount.location = (mix.location.x - 300, mix.location.y + 150)
+    _foam_cover(tree, mix)
     tree.links.new(source, mix.inputs[1])
     tree.links.new(foam.outputs[0], mix.inputs[2])
-    tree.links.new(amount.outputs["Fac"], mix.inputs["Fac"])
     tree.links.new(mix.outputs[0], target)
 
 
@@ -272,10 +287,13 @@ def hide_foam(material):
         return
     source = mix.inputs[1].links[0].from_socket if mix.inputs[1].is_linked else None
     targets = [link.to_socket for link in mix.outputs[0].links]
+    cover = getattr(tree.nodes.get(FOAM_READ), "node_tree", None)
     for name in (FOAM_MIX, FOAM_SHADER, FOAM_READ):
         node = tree.nodes.get(name)
         if node is not None:
             tree.nodes.remove(node)
+    if cover is not None and cover.users == 0 and role_of(cover) is not None:
+        bpy.data.node_groups.remove(cover)  # ours, and no material shows a wake's foam any more
     for target in targets if source is not None else ():
         tree.links.new(source, target)
 
