@@ -73,16 +73,7 @@ def _linear(obj):
 
 
 def _hull(scene, name="Hull", size=HULL):
-    mesh = bpy.data.meshes.new(name)
-    half = [s / 2.0 for s in size]
-    corners = [
-        (x, y, z) for x in (-half[0], half[0]) for y in (-half[1], half[1]) for z in (-half[2], half[2])
-    ]
-    faces = [(0, 1, 3, 2), (4, 6, 7, 5), (0, 4, 5, 1), (2, 3, 7, 6), (0, 2, 6, 4), (1, 5, 7, 3)]
-    mesh.from_pydata(corners, [], faces)
-    hull = bpy.data.objects.new(name, mesh)
-    scene.collection.objects.link(hull)
-    return hull
+    return harness.add_box(scene, name, size)
 
 
 def _run_straight(hull, speed=SPEED, heading=HEADING, start=START):

@@ -23,17 +23,7 @@ def _api():
 
 
 def _box(scene, name, location, size=(4.0, 1.5, 1.0)):
-    mesh = bpy.data.meshes.new(name)
-    half = [s / 2.0 for s in size]
-    corners = [
-        (x, y, z) for x in (-half[0], half[0]) for y in (-half[1], half[1]) for z in (-half[2], half[2])
-    ]
-    faces = [(0, 1, 3, 2), (4, 6, 7, 5), (0, 4, 5, 1), (2, 3, 7, 6), (0, 2, 6, 4), (1, 5, 7, 3)]
-    mesh.from_pydata(corners, [], faces)
-    obj = bpy.data.objects.new(name, mesh)
-    obj.location = location
-    scene.collection.objects.link(obj)
-    return obj
+    return harness.add_box(scene, name, size, location)
 
 
 def _select(*objects):

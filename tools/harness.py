@@ -246,6 +246,23 @@ def add_cube(scene, location, size=1.0, material=None, name="Cube"):
     return obj
 
 
+def add_box(scene, name, size, location=(0.0, 0.0, 0.0)):
+    """A box mesh object `size` (x, y, z) across, centred on its origin at `location` (a hull)."""
+    import bpy
+
+    mesh = bpy.data.meshes.new(name)
+    half = [s / 2.0 for s in size]
+    corners = [
+        (x, y, z) for x in (-half[0], half[0]) for y in (-half[1], half[1]) for z in (-half[2], half[2])
+    ]
+    faces = [(0, 1, 3, 2), (4, 6, 7, 5), (0, 4, 5, 1), (2, 3, 7, 6), (0, 2, 6, 4), (1, 5, 7, 3)]
+    mesh.from_pydata(corners, [], faces)
+    obj = bpy.data.objects.new(name, mesh)
+    obj.location = location
+    scene.collection.objects.link(obj)
+    return obj
+
+
 def set_world_color(scene, color, strength=1.0):
     """A world of one flat colour (the sky), made if missing."""
     import bpy

@@ -1,5 +1,5 @@
 """Renders boats and their wakes (out/boat_wakes.png): a boat crossing the lake at 4 m/s and one
-on the open sea (6 m/s wind) at 5 m/s, each from a chase camera 10 m from it, behind, aside and
+on the open sea (4 m/s wind) at 5 m/s, each from a chase camera 10 m from it, behind, aside and
 above, side by side. The boat (`render_sea.boat`: a 6 m hull and a cabin) floats with
 `api.float_on_water`, which gives it its wake; the frames before are stepped in order, as a render
 of the animation does. Run with `tools/demo boat` (`tools/demo --docs boat`: copied to docs/ too).
