@@ -795,6 +795,9 @@ def test_a_baked_wake_renders_any_frame_alone_without_the_add_on(scene, tmp_path
     points, foam = _surface(bpy.data.objects["Lake"])
     assert np.abs(points - stepped[0]).max() < 1e-5
     assert np.abs(foam - stepped[1]).max() < 1e-5
+    # The foam's breakup (its group and the foam tile it reads) travels in the file, packed.
+    tiles = [n.image for n in bpy.data.node_groups["Water Wake Foam Cover"].nodes if n.type == "TEX_IMAGE"]
+    assert len(tiles) == 2 and all(tile is not None and tile.packed_file is not None for tile in tiles)
 
 
 @pytest.mark.parametrize(
