@@ -95,18 +95,7 @@ def _step(scene, last=LAST_FRAME):
 
 def _surface(water):
     """(points (N, 3), foam (N,)) of the evaluated water, in its own space."""
-    evaluated = water.evaluated_get(bpy.context.evaluated_depsgraph_get())
-    mesh = evaluated.to_mesh()
-    try:
-        points = np.empty(len(mesh.vertices) * 3)
-        mesh.vertices.foreach_get("co", points)
-        foam = np.zeros(len(mesh.vertices))
-        attribute = mesh.attributes.get("water_wake_foam")
-        if attribute is not None:
-            attribute.data.foreach_get("value", foam)
-        return points.reshape(-1, 3), foam
-    finally:
-        evaluated.to_mesh_clear()
+    return harness.evaluated_points(water, "water_wake_foam")
 
 
 def _track_frame(points, where, heading):

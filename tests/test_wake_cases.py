@@ -245,16 +245,7 @@ def test_a_hull_and_its_child_float_and_leave_a_wake_without_a_cycle(scene):
 
 
 def _surface_foam(water):
-    evaluated = water.evaluated_get(bpy.context.evaluated_depsgraph_get())
-    mesh = evaluated.to_mesh()
-    try:
-        points = np.empty(len(mesh.vertices) * 3)
-        mesh.vertices.foreach_get("co", points)
-        foam = np.zeros(len(mesh.vertices))
-        mesh.attributes["water_wake_foam"].data.foreach_get("value", foam)
-    finally:
-        evaluated.to_mesh_clear()
-    return points.reshape(-1, 3), foam
+    return harness.evaluated_points(water, "water_wake_foam")
 
 
 @pytest.mark.parametrize("speed", [25.0, 100.0])

@@ -290,3 +290,56 @@ def test_an_older_wakes_foam_mix_gets_the_cover_and_none_is_left_when_the_wake_g
     api.remove_wake_source(hull, water)
     assert wake.FOAM_MIX not in tree.nodes and wake.FOAM_READ not in tree.nodes
     assert "Water Wake Foam Cover" not in bpy.data.node_groups
+
+
+def _evaluated(water):
+    """(points (N, 3), water_wake_foam (N,)) of the evaluated water, in its own space."""
+    return harness.evaluated_points(water, "water_wake_foam")
+
+
+@pytest.mark.parametrize(("strength", "speed", "breaks"), ((6.0, 6.0, True), (1.0, 3.0, False)))
+def test_the_wakes_steep_crests_break_white(scene, strength, speed, breaks):
+    """A blunt hull (Strength 6) at 6 m/s (Fr 0.78) raises crests steep enough to break; a gentle
+    one (Strength 1, 3 m/s) none. Over the whole lake, the foam is at least numpy's breaking foam
+    clamp((a k - 0.25) / 0.1), a the wake's height (the water with the wake less without it) and
+    k = 1.5 g / U², the cusp waves' wavenumber at the fastest the hull ran: white where a k passes
+    0.35."""
+    api = harness.addon("api")
+    scene.render.fps = FPS
+    water = api.add_water(scene, preset="lake", size=60.0, resolution=241, name="Lake").object
+    hull = _hull(scene, "Hull")
+    heading = 0.4
+    for frame in (1, 49):
+        seconds = (frame - 1) / FPS
+        hull.location = (
+            -20.0 + math.cos(heading) * speed * seconds,
+            -8.0 + math.sin(heading) * speed * seconds,
+            0.0,
+        )
+        hull.rotation_euler = (0.0, 0.0, heading)
+        hull.keyframe_insert("location", frame=frame)
+        hull.keyframe_insert("rotation_euler", frame=frame)
+    for fcurve in harness.addon("nodes.material")._action_fcurves(hull.animation_data.action):
+        for key in fcurve.keyframe_points:
+            key.interpolation = "LINEAR"
+    api.add_wake_source(hull, water, strength=strength)
+    for frame in range(1, 49):
+        scene.frame_set(frame)
+    points, foam = _evaluated(water)
+    wake = harness.addon("water.boats.wake").wake_modifiers(water)[0]
+    wake.show_viewport = False
+    before, _ = _evaluated(water)
+    height = points[:, 2] - before[:, 2]
+    steepness = height * 1.5 * 9.81 / speed**2
+    crests = np.clip((steepness - 0.25) / 0.1, 0.0, 1.0)
+    short = crests - foam
+    print(
+        f"Strength {strength:g} at {speed:g} m/s: a k up to {steepness.max():.2f}, "
+        f"{int((crests > 0.5).sum())} points breaking (over half white), the foam short of it by "
+        f"{short.max():.2e} at most"
+    )
+    assert short.max() < 1e-4
+    if breaks:
+        assert (crests > 0.5).sum() > 50 and foam[crests > 0.99].min() > 0.99
+    else:
+        assert steepness.max() < 0.25 and not (crests > 0).any()

@@ -263,6 +263,25 @@ def add_box(scene, name, size, location=(0.0, 0.0, 0.0)):
     return obj
 
 
+def evaluated_points(obj, attribute):
+    """(points (N, 3), the float point attribute `attribute` (N,), 0 where the mesh has none) of
+    `obj` evaluated now, in its own space."""
+    import bpy
+    import numpy as np
+
+    evaluated = obj.evaluated_get(bpy.context.evaluated_depsgraph_get())
+    mesh = evaluated.to_mesh()
+    try:
+        points = np.empty(len(mesh.vertices) * 3)
+        mesh.vertices.foreach_get("co", points)
+        values = np.zeros(len(mesh.vertices))
+        if attribute in mesh.attributes:
+            mesh.attributes[attribute].data.foreach_get("value", values)
+        return points.reshape(-1, 3), values
+    finally:
+        evaluated.to_mesh_clear()
+
+
 def set_world_color(scene, color, strength=1.0):
     """A world of one flat colour (the sky), made if missing."""
     import bpy

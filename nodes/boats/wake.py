@@ -10,7 +10,8 @@ wave one hull length across) over the pattern's own height; it grows in from the
 half its length and fades as `exp(-age / Fade)`. `tests/test_wake.py` compares it over the
 whole patch behind the hull with the integral itself (`tools/kelvin_model.py`). Where the
 object drops in, `Water Wake Ring`'s ring; `Water Wake Foam`'s foam round the hull and along
-its drifted trail (`water_wake_foam`, 0..1, the larger of this wake's and any before it).
+its drifted trail (`water_wake_foam`, 0..1, the larger of this wake's and any before it), and
+white on its crests where they are steep enough to break (`_foam_nodes`).
 
 Lengths come in metres (`Length`, `Beam`, `Draft`, `Detail`, `Drift`) and g in m/s²: the group
 reads them in the water's own units through its scale (`_units_nodes`), so a scaled water makes
@@ -26,6 +27,14 @@ from .wake_parts import DEPTH_DEFAULT, FOAM_ATTRIBUTE, merge, named, sample, sto
 
 NAME = "Water Wake"
 SHADING_NORMAL = NORMAL_ATTRIBUTE  # the normal the seeds' ocean shades with
+# Its crests break white where they are steep: ak, the wake's height a over the water before it
+# times the cusp waves' wavenumber k = 1.5 g / U² at the fastest the hull ran over its kept track
+# (the longest waves it made: a hull slowing down does not make its old waves steeper), from
+# BREAK_ONSET to all white at BREAK_FULL (a Stokes wave cannot be steeper than ak 0.44; real
+# crests spill well before it).
+CUSP_K = 1.5
+BREAK_ONSET = 0.25
+BREAK_FULL = 0.35
 
 
 def _ring_nodes():
@@ -202,8 +211,55 @@ def _foam_nodes():
         "drift_flat": vmath("MULTIPLY", 18, "on the plane", b=(1.0, 1.0, 0.0)),
         "drifted": Node("GeometryNodeSetPosition", 19, label="track, drifted"),
         "store_foam": store(FOAM_ATTRIBUTE, "FLOAT", 50),
+        # Breaking crests: the height the wake gave each point of its zone (its place now less the
+        # one it came with, read by index: a few ns a point, the pattern not worked out again),
+        # times k at the fastest it ran; white from BREAK_ONSET to BREAK_FULL, over the foam.
+        "c_index": Node("GeometryNodeInputIndex", 50, label="the point"),
+        "c_before": sample("FLOAT_VECTOR", 51, "where it was before the wake"),
+        "c_position": Node("GeometryNodeInputPosition", 50, label="where it is now"),
+        "c_lift": vmath("SUBTRACT", 52, "the wake's lift"),
+        "c_height": Node("ShaderNodeSeparateXYZ", 53, label="a"),
+        "c_speeds": named("wake_speed", "FLOAT", 48, "the track's speeds"),
+        "c_fastest": Node("GeometryNodeAttributeStatistic", 49, {"domain": "POINT"}, label="the fastest"),
+        "c_u": math("MAXIMUM", 50, "U (> 0.2 m/s)", b=0.2),
+        "c_u2": math("MULTIPLY", 51, "U²"),
+        "c_k": math("DIVIDE", 52, "g / U²"),
+        "c_cusp": math("MULTIPLY", 53, f"k = {CUSP_K:g} g / U²", b=CUSP_K),
+        "c_ak": math("MULTIPLY", 54, "ak"),
+        "c_break": Node(
+            "ShaderNodeMapRange",
+            55,
+            {"clamp": True, "interpolation_type": "LINEAR"},
+            {1: BREAK_ONSET, 2: BREAK_FULL, 3: 0.0, 4: 1.0},
+            label=f"breaking: ak {BREAK_ONSET:g} to {BREAK_FULL:g}",
+        ),
+        "c_foam_now": named(FOAM_ATTRIBUTE, "FLOAT", 55, "the foam stored"),
+        "c_foam": math("MAXIMUM", 56, "and the crests'"),
+        "store_crests": store(FOAM_ATTRIBUTE, "FLOAT", 57),
     }
     links = (
+        ("input:Geometry", "c_before:Geometry"),
+        ("c_position:Position", "c_before:Value"),
+        ("c_index:Index", "c_before:Index"),
+        ("c_position:Position", "c_lift:#0"),
+        ("c_before:Value", "c_lift:#1"),
+        ("c_lift:Vector", "c_height:Vector"),
+        ("track_group:Track", "c_fastest:Geometry"),
+        ("c_speeds:Attribute", "c_fastest:Attribute"),
+        ("c_fastest:Max", "c_u:#0"),
+        ("c_u:Value", "c_u2:#0"),
+        ("c_u:Value", "c_u2:#1"),
+        ("g_u:Value", "c_k:#0"),
+        ("c_u2:Value", "c_k:#1"),
+        ("c_k:Value", "c_cusp:#0"),
+        ("c_height:Z", "c_ak:#0"),
+        ("c_cusp:Value", "c_ak:#1"),
+        ("c_ak:Value", "c_break:Value"),
+        ("c_foam_now:Attribute", "c_foam:#0"),
+        ("c_break:Result", "c_foam:#1"),
+        ("store_foam:Geometry", "store_crests:Geometry"),
+        ("in_wake:Value", "store_crests:Selection"),
+        ("c_foam:Value", "store_crests:Value"),
         ("clock:Seconds", "t_age:#0"),
         ("t_time:Attribute", "t_age:#1"),
         ("drift_u:Vector", "drift:#0"),
@@ -229,7 +285,7 @@ def _zone_read_nodes():
     links = (
         ("zone_read:Attribute", "in_wake:#0"),
         ("zone_read:Attribute", "in_foam:#0"),
-        ("store_foam:Geometry", "drop_zone:Geometry"),
+        ("store_crests:Geometry", "drop_zone:Geometry"),
         ("drop_zone:Geometry", "output:Geometry"),
     )
     return nodes, links
@@ -437,7 +493,7 @@ _NODES, _LINKS = merge(
 )
 SPEC = GroupSpec(
     name=NAME,
-    version=11,
+    version=12,  # 12: steep crests break white (CUSP_K, BREAK_ONSET, BREAK_FULL)
     includes=(
         wake_kelvin.SPEC,
         wake_height.SPEC,
