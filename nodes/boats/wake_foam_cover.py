@@ -8,9 +8,10 @@ follow (`foam_coverage.foam_breakup`): `clamp((b + k g - 1) / SOFTNESS)`, `k = 1
 that fresh foam (g = 1) covers all of the water and thin foam only the pattern's peaks.
 
 `g = max(0, (f^P - c) / (1 - c))`, `c = FLOOR^P`: the amount raised to P < 1, so the foam the wake
-keeps thin (its tails across the trail and its fading) still shows, as lace, over about 1 / P
-its width and fading time (its Gaussian `exp(-(d / w)^2)` becomes `exp(-(d / (w / sqrt P))^2)`); 0
-at FLOOR, where the wake's zone stops storing foam, so no edge shows there.
+keeps thin (its tails across the trail and its fading) still shows, as lace: 1 / sqrt(P) as wide
+(its Gaussian `exp(-(d / w)^2)` becomes `exp(-(d / (w / sqrt P))^2)`) and fading 1 / P as slowly
+(`exp(-age / F)` becomes `exp(-age / (F / P))`); 0 at FLOOR, where the wake's zone stops storing
+foam, so no edge shows there.
 
 `b = LACE lace + (1 - LACE) middles`, two reads of the add-on's foam tile in the water's own space:
 its lace FINE metres across, and the tile's bubble middles (1 - the tile) PATCH metres across and
@@ -31,7 +32,7 @@ FINE = 11.0  # metres: the lace's read of the tile (its bubbles 2.2, 0.85 and 0.
 PATCH = 37.0  # metres: the patches' read (bubbles 7.4 and 2.8 m across)
 TURN = 0.5  # radians: the patches' read turned about z
 LACE = 0.35  # the lace's weight in b (the middles' 0.65)
-POWER = 0.35  # P: thin foam shows over about 1 / P its width and fading time
+POWER = 0.35  # P: thin foam shows 1.7 times as wide, fading 2.9 times as slowly
 FLOOR = 0.005  # the amount where the wake's zone stops storing foam (`wake_zone.py`)
 CUT = FLOOR**POWER  # c
 GAIN = 1.0 + foam_map.SOFTNESS  # k: fresh foam (g = 1) covers everything
