@@ -11,10 +11,6 @@ of one `-a`-style job. The workers are `tools/farm_worker.py`: plain bpy with a
 fresh user folder, where the add-on is not installed.
 """
 
-import os
-import subprocess
-import sys
-
 import bpy
 import numpy as np
 import pytest
@@ -56,17 +52,7 @@ def shot(addon, eevee, tmp_path_factory):
 
 def _work(*args):
     """Runs one farm worker process; fails the test with its output when it fails."""
-    env = {**os.environ, "PYTHONPATH": str(harness.ROOT / "tools")}
-    env.pop("BLENDER_USER_RESOURCES", None)
-    done = subprocess.run(
-        [sys.executable, str(harness.ROOT / "tools" / "farm_worker.py"), *map(str, args)],
-        capture_output=True,
-        text=True,
-        env=env,
-        timeout=600,
-        check=False,
-    )
-    assert done.returncode == 0, done.stdout[-2000:] + done.stderr[-2000:]
+    harness.run_worker(harness.ROOT / "tools" / "farm_worker.py", *args)
 
 
 @pytest.mark.lts

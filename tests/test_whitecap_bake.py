@@ -14,8 +14,6 @@ files the modifier then reads.
 
 import json
 import os
-import subprocess
-import sys
 import time
 
 import bpy
@@ -54,22 +52,9 @@ for blend, first, frame, out in json.loads(sys.argv[1]):
 
 def _work(jobs):
     """Runs WORKER over `jobs` ((blend, first frame, frame, out EXR), ...) in a process of its own."""
-    env = {**os.environ, "PYTHONPATH": str(harness.ROOT / "tools")}
-    env.pop("BLENDER_USER_RESOURCES", None)
-    done = subprocess.run(
-        [
-            sys.executable,
-            "-c",
-            WORKER,
-            json.dumps([[str(v) if not isinstance(v, int) else v for v in job] for job in jobs]),
-        ],
-        capture_output=True,
-        text=True,
-        env=env,
-        timeout=600,
-        check=False,
+    harness.run_worker(
+        "-c", WORKER, json.dumps([[str(v) if not isinstance(v, int) else v for v in job] for job in jobs])
     )
-    assert done.returncode == 0, done.stdout[-2000:] + done.stderr[-2000:]
     return [harness.load_image(job[3])[..., :3] for job in jobs]
 
 

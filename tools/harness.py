@@ -401,10 +401,18 @@ def bat(*args):
         "sys.argv = ['bat', *([] if bat.__version__.startswith('1.') else ['--']), *args]; "
         "from blender_asset_tracer import cli; cli.cli_main()"
     )
+    return fresh_python("-c", code, *args)
+
+
+def fresh_python(*args, tools=False):
+    """Runs this Python (bpy's) on `args` in a process of its own, with Blender's default user
+    resources (and tools/ importable where `tools`); returns its exit status and output."""
     env = {**os.environ}
     env.pop("BLENDER_USER_RESOURCES", None)
+    if tools:
+        env["PYTHONPATH"] = str(ROOT / "tools")
     done = subprocess.run(
-        [sys.executable, "-c", code, *map(str, args)],
+        [sys.executable, *map(str, args)],
         capture_output=True,
         text=True,
         env=env,
@@ -412,3 +420,9 @@ def bat(*args):
         check=False,
     )
     return done.returncode, done.stdout + done.stderr
+
+
+def run_worker(*args):
+    """`fresh_python(*args)` with tools/ importable (a farm worker); fails with its output when it fails."""
+    status, output = fresh_python(*args, tools=True)
+    assert status == 0, output[-4000:]
