@@ -10,9 +10,14 @@ metres of rest place, and llvmpipe's filtered reads there ran for minutes. The U
 the points where they are drawn (`Water Sea Fade`, version 4) and the lace is read nearest-texel
 (`Water Ocean Shade`, version 14). Nearest-texel reads and Cycles never hung.
 
-The frames beside 201 (190, 210) render first in the same process, so the shader is compiled
-before the frame that hung; the test holds frame 201 within 4 times their CPU time (a ratio in one
-run, not a timing) and the whole process within a limit that a hang cannot meet.
+Frame 181 still cost 7 times its neighbours (22 s against 3 s): where the eye sees a triangle of
+the folded sea edge-on, the taps' UV steps by thousands of tiles from one pixel to the next, and
+llvmpipe's anisotropic filter walks every texel of that footprint's box on the smallest mip. The
+taps' UV is now capped there (`Water Ocean Normal`, version 5, `SLANT_LIMIT`).
+
+The frames beside 201 and 181 (190, 210, 170) render first in the same process, so the shader is
+compiled before the slow frames; the test holds frames 201 and 181 each within 4 times their CPU
+time (a ratio in one run, not a timing) and the whole process within a limit a hang cannot meet.
 `bench/bench_gale_frames.py` renders every frame 150-250 of the shot.
 """
 
@@ -54,8 +59,8 @@ for frame in map(int, sys.argv[3].split(",")):
 print("RESULT " + json.dumps(seconds))
 """
 
-HUNG = 201
-BESIDE = (190, 210)
+SLOW = (201, 181)  # 201 hung; 181 cost 7 times its neighbours
+BESIDE = (190, 210, 170)
 # A frame beside it renders in 3-9 s of CPU here; the one that hung ran past 300 s.
 LIMIT_S = 240
 
@@ -64,7 +69,7 @@ def test_the_gale_frame_that_hung_renders_like_its_neighbours(addon_zip, tmp_pat
     user = tmp_path / "user"
     user.mkdir()
     env = dict(os.environ, BLENDER_USER_RESOURCES=str(user))
-    frames = ",".join(str(f) for f in (*BESIDE, HUNG))
+    frames = ",".join(str(f) for f in (*BESIDE, *SLOW))
     try:
         done = subprocess.run(
             [sys.executable, "-c", RENDER_FRAMES, str(addon_zip), str(harness.ROOT / "tools"), frames],
@@ -81,4 +86,5 @@ def test_the_gale_frame_that_hung_renders_like_its_neighbours(addon_zip, tmp_pat
     seconds = {int(k): v for k, v in json.loads(line[len("RESULT ") :]).items()}
     beside = max(seconds[f] for f in BESIDE[1:])  # the first frame also compiled the shader
     print(f"gale frames, CPU s: {seconds}")
-    assert seconds[HUNG] < 4.0 * beside, seconds
+    for frame in SLOW:
+        assert seconds[frame] < 4.0 * beside, (frame, seconds)

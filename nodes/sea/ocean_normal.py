@@ -2,10 +2,12 @@
 share of the slopes its mipmaps averaged away (`Unresolved Slope`), for `Water Ocean Shade`."""
 
 from ..bump_uv import TIME_INPUT
+from ..footprint_cap import capped
 from ..spec import BUMP_IMAGE, GroupSpec, Node, Socket, math, vmath
 from ..water_waves import NORMAL_ATTRIBUTE
 from . import rough_fresnel
 from .ocean_parts import UNRESOLVED_SLOPE
+from .sea_fade import UV_METRES
 
 NORMAL_NAME = "Water Ocean Normal"
 
@@ -95,6 +97,13 @@ _UNRESOLVED_LINKS = (
 )
 
 
+# The finest tap repeats 3.1 Tex Stretch times a UV unit (UV_METRES): its tiles per metre, for
+# `footprint_cap`, which scales the scrolled UV where a pixel sees the sea edge-on.
+_CAP_NODES, _CAP_LINKS = capped("uv", 5, "uv_free:Vector", "finest_tiles:Value")
+_CAP_NODES["finest_tiles"] = math("MULTIPLY", 4, "finest tap's tiles a metre", b=3.1 / UV_METRES)
+_CAP_LINKS = (("input:Tex Stretch", "finest_tiles:#0"), *_CAP_LINKS)
+
+
 def _tap(key, column):
     return Node("ShaderNodeTexImage", column, {"extension": "REPEAT", "image": BUMP_IMAGE}, label=key)
 
@@ -105,7 +114,8 @@ NORMAL_SPEC = GroupSpec(
     # normalises it into NaN, and the NaN, even weighted by 0, turned the whole ocean black.
     # 3: the slopes scale apart along and across the wind (the open sea's Cox and Munk slopes).
     # 4: `Unresolved Slope`, the slopes the taps' mipmaps averaged away (`rough_fresnel.py`).
-    version=4,
+    # 5: the taps' UV capped where a pixel sees the sea edge-on (`footprint_cap.py`).
+    version=5,
     description="Wave normal plus three bump taps; the direction the eye reflects into",
     inputs=(
         Socket(
@@ -193,7 +203,8 @@ NORMAL_SPEC = GroupSpec(
         # Three taps at the scrolled UV: uv + t / 50 * (-1, 0).
         "drift": math("MULTIPLY", 2, "-t / 50", b=-1.0 / 50.0),
         "drift_v": Node("ShaderNodeCombineXYZ", 3, label="(-t / 50, 0)"),
-        "uv": vmath("ADD", 4, "scrolled uv"),
+        "uv_free": vmath("ADD", 4, "scrolled uv"),
+        **_CAP_NODES,
         "uv_split": Node("ShaderNodeSeparateXYZ", 5),
         "uv_swap": Node("ShaderNodeCombineXYZ", 6, label="uv.yx"),
         "stretch_2": math("MULTIPLY", 5, "1.8 stretch", b=1.8),
@@ -268,8 +279,9 @@ NORMAL_SPEC = GroupSpec(
         ("wave_sum:Vector", "N:#0"),
         ("input:Time", "drift:#0"),
         ("drift:Value", "drift_v:X"),
-        ("coords:UV", "uv:#0"),
-        ("drift_v:Vector", "uv:#1"),
+        ("coords:UV", "uv_free:#0"),
+        ("drift_v:Vector", "uv_free:#1"),
+        *_CAP_LINKS,
         ("uv:Vector", "uv_split:Vector"),
         ("uv_split:Y", "uv_swap:X"),
         ("uv_split:X", "uv_swap:Y"),

@@ -28,6 +28,7 @@ world's image: the lookup sits between them in the material.
 from dataclasses import replace
 
 from .. import bump_uv, caustics, foam_coverage, surface_parts, underside
+from ..footprint_cap import capped
 from ..spec import (
     ROUGH_FRESNEL_IMAGE,
     GroupSpec,
@@ -97,6 +98,11 @@ _T_NODES, _T_LINKS = surface_parts.transmittance_nodes()
 
 _DEBUG_NODES, _DEBUG_LINKS = debug_nodes()
 
+# The shore foam's and the caustics' reads at the scrolled bump UV, capped where a pixel sees the
+# sea edge-on.
+_CAP_NODES, _CAP_LINKS = capped("tile_uv", 13, "bump_uv:Vector", "bump_tiles:Value")
+
+
 FULL_SHADE_SPEC = GroupSpec(
     name=SHADE_NAME,
     # 2: whitecaps; 3: depth colour, shore foam and caustics from the surroundings; 4: the traced
@@ -113,8 +119,9 @@ FULL_SHADE_SPEC = GroupSpec(
     # two reads of the tile (one alone repeated across the wind: stripes from high up); 14: the
     # lace read nearest-texel (a mipmapped read hung software EEVEE on folded crests); 15: whitecaps
     # are compact spots (Voronoi), whole, drawn out a^0.42 (were the foam tile's bubble middles:
-    # dashes a pixel wide)
-    version=15,
+    # dashes a pixel wide); 16: the shore foam's and caustics' reads capped where a pixel sees the
+    # sea edge-on (`footprint_cap.py`: software EEVEE took 30 s over such a frame)
+    version=16,
     description="Ocean colour: deep blue and the reflected sky by the ocean Fresnel, plus the glint; "
     "white lit foam on the crests; with the surroundings, the bed seen through shallow water, "
     "shore foam and caustics",
@@ -202,6 +209,8 @@ FULL_SHADE_SPEC = GroupSpec(
         "emit": Node("ShaderNodeEmission", 30, values={"Strength": 1.0}, label="unlit"),
         # The bed, refracted, at F T x the caustic factor (`caustics.py`).
         "bump_uv": group_node(bump_uv.NAME, 12, "scrolled bump UV (foam, caustics)"),
+        "bump_tiles": math("DIVIDE", 12, "the bump UV's tiles a metre", a=1.0 / sea_fade.UV_METRES),
+        **_CAP_NODES,
         "caustics": replace(group_node(caustics.NAME, 24, "caustic factor"), part="caustics"),
         "lit_bed": vmath("SCALE", 25, "T x caustics"),
         "seen": vmath("SCALE", 28, "F T x caustics"),
@@ -385,7 +394,9 @@ FULL_SHADE_SPEC = GroupSpec(
         ("glint_v:Vector", "color:#1"),
         ("color:Vector", "emit:Color"),
         *pass_inputs("bump_uv", surface_parts.BUMP_UV_INPUTS),
-        *caustics.feed("caustics", "bump_uv:Vector"),
+        ("input:Wave Length", "bump_tiles:#1"),
+        *_CAP_LINKS,
+        *caustics.feed("caustics", "tile_uv:Vector"),
         ("t_seen:Vector", "lit_bed:#0"),
         ("caustics:Factor", "lit_bed:Scale"),
         ("lit_bed:Vector", "seen:#0"),
@@ -463,7 +474,7 @@ FULL_SHADE_SPEC = GroupSpec(
         ("lace_tile:Color", "cap_sum:#0"),
         ("crest:Value", "cap_sum:#1"),
         ("cap_sum:Value", "cover:Value"),
-        *foam_coverage.foam_feed("shore_foam", "bump_uv:Vector"),
+        *foam_coverage.foam_feed("shore_foam", "tile_uv:Vector"),
         ("cover:Result", "foam_cover:#0"),
         ("shore_foam:Coverage", "foam_cover:#1"),
         ("foam_cover:Value", "mix:Fac"),
