@@ -406,3 +406,61 @@ def test_in_a_strong_wind_the_foam_lies_in_streaks_along_it_not_cells(addon, eev
             f"{aspect:.1f} times as long as wide"
         )
         assert off <= 15.0 and aspect >= 5.0
+
+
+def test_whitecap_foam_is_lit_by_the_sun_and_shaded_on_its_dark_side(sea_scene, render):
+    """The final picture's whitecaps (issue 58 point 1): lit by the sun and the sky, as a white
+    Lambert surface is. 15 m/s, 12 m up, a sun 15 degrees up across the view (so the foam's faces
+    turn to it and from it), three moments. Over the whitecap pixels (foam view 1), the picture's
+    linear luminance against max(n . l, 0), n the waves' normal (Debug View 4 with the bump's
+    ripples off: foam hides them), is a line whose
+    slope is about the foam's albedo x the sun's irradiance / pi and whose offset is the albedo x the
+    sky: numpy's Lambert model. The tenth of the foam most turned from the sun is darker than the
+    tenth facing it most by at least half what the model says. Unlit foam (an emission, as on 4.2)
+    has no slope and fails."""
+    scene = sea_scene
+    sea = _foam_view_sea(scene, 15.0)
+    normal_node, shade = harness.addon("nodes.sea.ocean_material").ocean_nodes(sea.active_material)
+    debug, bump = shade.inputs["Debug View"], normal_node.inputs["Bump Strength"]
+    scene.render.resolution_x, scene.render.resolution_y = 192, 108
+    look = np.array((0.6, 0.8))
+    camera = harness.add_camera(scene, (2.0, -5.0, 12.0), (62.0, 75.0, -48.0))
+    scene.camera = camera
+    across = np.array((look[1], -look[0]))
+    light = _low_sun(scene, across)
+    to_sun = np.array((*(across * np.cos(np.radians(15.0))), np.sin(np.radians(15.0))))
+    lum, facing = [], []
+    try:
+        for frame in FRAMES:
+            scene.frame_set(frame)
+            debug.default_value = 0
+            picture = render(scene, f"lit_{frame}", exr=True)[..., :3]
+            debug.default_value = 7
+            foam = render(scene, f"lit_foam_{frame}", exr=True)[..., 0] > 0.99
+            debug.default_value, strength, bump.default_value = 4, bump.default_value, 0.0
+            n = render(scene, f"lit_normal_{frame}", exr=True)[..., :3] * 2.0 - 1.0
+            bump.default_value = strength
+            n /= np.maximum(np.linalg.norm(n, axis=-1, keepdims=True), 1e-6)
+            lum.append((picture @ np.array([0.2126, 0.7152, 0.0722]))[foam])
+            facing.append(np.maximum(n @ to_sun, 0.0)[foam])
+    finally:
+        bpy.data.objects.remove(light)
+        debug.default_value = 7
+    lum, facing = np.concatenate(lum), np.concatenate(facing)
+    slope, offset = np.polyfit(facing, lum, 1)
+    albedo = np.array(harness.addon("nodes.sea.ocean_parts").FOAM_WHITE) @ np.array([0.2126, 0.7152, 0.0722])
+    expected = albedo * 4.0 / np.pi  # the sun: 4 W/m^2 (_low_sun)
+    sky = albedo * np.array((0.45, 0.6, 0.8)) @ np.array([0.2126, 0.7152, 0.0722])  # the sky's share
+    low, high = np.quantile(facing, (0.1, 0.9))
+    turned, facing_it = lum[facing <= low].mean(), lum[facing >= high].mean()
+    model = (sky + expected * facing[facing <= low].mean()) / (sky + expected * facing[facing >= high].mean())
+    print(
+        f"whitecap pixels {lum.size}: luminance = {slope:.2f} max(n.l, 0) + {offset:.2f} (Lambert: "
+        f"{expected:.2f} max(n.l, 0) + {sky:.2f}); the tenth most turned from the sun (n.l <= {low:.2f}) "
+        f"{turned:.2f}, the tenth facing it most (>= {high:.2f}) {facing_it:.2f}: {turned / facing_it:.2f} "
+        f"(Lambert {model:.2f})"
+    )
+    assert lum.size > 300
+    assert 0.5 * expected < slope < 1.5 * expected
+    assert 0.5 * sky < offset < 1.5 * sky
+    assert turned / facing_it < 1.0 - 0.5 * (1.0 - model)
