@@ -61,17 +61,25 @@ def _foam_view_sea(scene, wind):
     return sea.object
 
 
-def _foam_views(sea_scene, wind, render, frames=FRAMES, span=None):
-    """(foam views at `frames`, metres a pixel) of the open sea at `wind` m/s, straight down, over
-    `span` metres (VIEW_TILES of its tile without)."""
-    scene = sea_scene
-    ocean = harness.addon("water.sea.open_sea").sea_modifiers(_foam_view_sea(scene, wind))[0]
+def _down_over_sea(scene, wind, span=None):
+    """The open sea at `wind` m/s in its foam view, the camera "Down" straight over a square `span`
+    metres wide (VIEW_TILES of its tile without): (the sea's object, the span)."""
+    sea = _foam_view_sea(scene, wind)
+    ocean = harness.addon("water.sea.open_sea").sea_modifiers(sea)[0]
     span = span or VIEW_TILES * ocean.spatial_size
     scene.camera = camera = bpy.data.objects["Down"]
     scene.render.resolution_x = scene.render.resolution_y = PIXELS
     camera.data.ortho_scale = span
     camera.location = (0.05 * span, -0.03 * span, 40.0 + 2.0 * span)
     camera.data.clip_end = 100.0 + 4.0 * span
+    return sea, span
+
+
+def _foam_views(sea_scene, wind, render, frames=FRAMES, span=None):
+    """(foam views at `frames`, metres a pixel) of the open sea at `wind` m/s, straight down, over
+    `span` metres (VIEW_TILES of its tile without)."""
+    scene = sea_scene
+    _sea, span = _down_over_sea(scene, wind, span)
     views = []
     for frame in frames:
         scene.frame_set(frame)
@@ -117,6 +125,28 @@ def test_whitecaps_cover_as_much_of_the_sea_as_monahan_measured(foam, render, wi
     share = np.mean([(view > 0.5).mean() for view in views])
     print(f"{wind:g} m/s: whitecaps {share:.4f} of the sea, Monahan {monahan(wind):.4f}")
     assert 0.75 * monahan(wind) < share < 1.25 * monahan(wind), share / monahan(wind)
+
+
+@pytest.mark.parametrize("wind", [10.0, 15.0, 20.0])
+def test_straight_down_the_picture_is_as_white_as_monahan_measured(sea_scene, render, wind):
+    """The final picture (issue 58 point 1), straight down over the foam views' square under a
+    sun 15 degrees up across the wind, the three moments: the share of its white pixels (bright,
+    hardly coloured) within 50% of Monahan's W = 3.84e-6 U^3.41 at 10, 15 and 20 m/s."""
+    scene = sea_scene
+    sea, _span = _down_over_sea(scene, wind)
+    debug = harness.addon("nodes.sea.ocean_material").ocean_nodes(sea.active_material)[1].inputs["Debug View"]
+    light = _low_sun(scene, (0.6, -0.8))
+    shares = []
+    try:
+        debug.default_value = 0
+        for frame in FRAMES:
+            scene.frame_set(frame)
+            shares.append(_white(render(scene, f"down_{wind:g}_{frame}")).mean())
+    finally:
+        bpy.data.objects.remove(light)
+        debug.default_value = 7
+    print(f"{wind:g} m/s, straight down: white {np.round(shares, 4)} of the picture, Monahan {monahan(wind):.4f}")
+    assert 0.5 * monahan(wind) < np.mean(shares) < 1.5 * monahan(wind), np.mean(shares) / monahan(wind)
 
 
 def _repeat_across(view, pixel):
