@@ -145,7 +145,7 @@ def test_straight_down_the_picture_is_as_white_as_monahan_measured(sea_scene, re
     finally:
         bpy.data.objects.remove(light)
         debug.default_value = 7
-    print(f"{wind:g} m/s, straight down: white {np.round(shares, 4)} of the picture, Monahan {monahan(wind):.4f}")
+    print(f"{wind:g} m/s, straight down: white {np.round(shares, 4)} of the picture, W {monahan(wind):.4f}")
     assert 0.5 * monahan(wind) < np.mean(shares) < 1.5 * monahan(wind), np.mean(shares) / monahan(wind)
 
 
