@@ -491,3 +491,32 @@ def test_a_saved_sea_animates_and_renders_the_same_without_the_add_on(
         difference = np.abs(render(scene, f"without_{name}", exr=True)[..., :3] - renders[name]).mean()
         print(f"{name}: with and without the add-on, mean difference {difference:.5f}")
         assert difference < 0.01, name
+
+
+@pytest.mark.lts
+def test_the_sea_s_clock_is_keyed_as_it_is_driven(scene):
+    """The Ocean modifier's Bake reads `time` from F-curves only (issue 58 point 6), so the sea's
+    and the swell's clocks are keyed as well as driven: at 29.97 frames a second the F-curve and
+    the evaluated modifier give frame x 1.001 / 30 s at frames 1, 57 and 300 (the driver's
+    seconds). Setting the swell to 0 takes its F-curve away; Remove Water the action."""
+    scene.render.fps, scene.render.fps_base = 30, 1.001
+    try:
+        sea = _open_sea(scene, sea_wind_speed=9.0, sea_swell_height=1.0).object
+        clock = harness.addon("water.sea.sea_clock")
+        open_sea = harness.addon("water.sea.open_sea")
+        ocean, swell = open_sea.sea_modifiers(sea)[0], open_sea.swell_modifier(sea)
+        for frame in (1, 57, 300):
+            scene.frame_set(frame)
+            evaluated = sea.evaluated_get(bpy.context.evaluated_depsgraph_get())
+            for modifier in (ocean, swell):
+                seconds = frame * 1.001 / 30.0
+                assert clock.clock_fcurve(sea, modifier).evaluate(frame) == pytest.approx(seconds, rel=1e-6)
+                assert evaluated.modifiers[modifier.name].time == pytest.approx(seconds, rel=1e-6)
+        action = sea.animation_data.action.name
+        _api().set_swell(sea, height=0.0, scene=scene)
+        assert open_sea.swell_modifier(sea) is None
+        assert clock.clock_fcurve(sea, ocean) is not None and action in bpy.data.actions
+        _api().remove_water(sea, scene)
+        assert action not in bpy.data.actions
+    finally:
+        scene.render.fps, scene.render.fps_base = 24, 1.0

@@ -138,23 +138,17 @@ def test_a_frame_rendered_alone_without_the_add_on_is_the_stepped_frame_with_it(
     assert unfoamed > 50 * MAX_DIFFERENCE, "a frame without its foam would fail the test"
 
 
-@pytest.mark.xfail(
-    strict=True,
-    reason="issue 58 point 6, needs the add-on: the Ocean modifier's Bake takes `time` from its "
-    "F-curves only (Blender's `ocean_bake_exec`: no drivers), and the add-on drives `time` "
-    "(frame / (fps / fps_base)), so every baked frame holds the same waves",
-)
 def test_the_ocean_modifier_s_bake_keeps_the_waves_moving(shot, tmp_path):
     """The Ocean modifier's own Bake over frames 1 to 40 writes each frame's waves (`disp_####.exr`,
     the displacement of the modifier's grid), which a baked sea renders from, its whitecaps
     worked out from their heights. So frames 1, 39 and 40 must hold different waves: the clock runs
-    through the bake as through the render. Measured on 4.2.23, 4.5.15 and 5.2.3: every frame's
-    displacement equals frame 1's, exactly. With `time` keyed in place of the driver (0 s at frame 0,
-    40/24 s at frame 40) the test passes: frame 1 against 40 differs by 0.90 of the waves' spread,
-    39 against 40 by 0.0019 (19 times the bound). In a Blender without a window (these tests, a
-    farm) the bake's job writes the files but never ends, so `is_cached` stays off and nothing
-    reads them: only a bake made in Blender's window is saved as baked, so a frame rendered alone
-    from a baked sea cannot be checked here."""
+    through the bake as through the render. The bake reads `time` from the object's F-curves only
+    (Blender's `ocean_bake_exec`: no drivers); with the add-on's driven clock alone every frame's
+    displacement equalled frame 1's, exactly (4.2.23, 4.5.15, 5.2.3). The clock is keyed too now
+    (`water/sea/sea_clock.py`: a keyless F-curve's Generator, the driver's seconds). In a Blender
+    without a window (these tests, a farm) the bake's job writes the files but never ends, so
+    `is_cached` stays off and nothing reads them: only a bake made in Blender's window is saved as
+    baked, so a frame rendered alone from a baked sea cannot be checked here."""
     scene, sea = shot["scene"], shot["sea"]
     ocean = harness.addon("water.sea.open_sea").sea_modifiers(sea)[0]
     ocean.frame_start, ocean.frame_end = 1, FRAME

@@ -33,7 +33,7 @@ from .users import unused
 from .values import water_material
 
 # The add-on's data kinds removed once nothing uses them (their marks say whose they are).
-_OWN_KINDS = ("node_groups", "images", "worlds", "lightprobes")
+_OWN_KINDS = ("node_groups", "images", "worlds", "lightprobes", "actions")
 # The generated images carry marks of their own (`nodes/packed_image.py`).
 _IMAGE_KEYS = tuple(m.VERSION_KEY for m in (bump_image, caustics_image, foam_image, rough_fresnel_image))
 

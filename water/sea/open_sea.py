@@ -34,6 +34,7 @@ from ...nodes.sea.ocean_material import ocean_nodes
 from ..editable import check_editable
 from ..errors import WaterError
 from ..waves import set_wave_input
+from .sea_clock import key_clock, unkey_clock
 from .sea_math import (
     FADE_END_TILES,
     FADE_START_TILES,
@@ -146,6 +147,7 @@ def set_sea(obj, values, scene):
     ocean.use_foam = False
     ocean.wave_scale = wave_scale(wind, ocean.spectrum, height_std_at_scale_1(ocean))
     drive_clock(ocean, scene, prop="time")
+    key_clock(obj, ocean, scene)
     _set_fade(fade, FADE_START_TILES * ocean.spatial_size, FADE_END_TILES * ocean.spatial_size)
     drive_slopes(obj, ocean, first=found is None)
     if "sea_swell_height" in values:
@@ -263,6 +265,7 @@ def set_swell(obj, values, scene):
         if swell is None:
             return "no swell"
         swell.driver_remove("time")
+        unkey_clock(obj, swell)
         obj.modifiers.remove(swell)
         return f"swell removed from '{obj.name}'"
     if swell is None:
@@ -285,6 +288,7 @@ def set_swell(obj, values, scene):
     swell.use_foam = False
     swell.wave_scale = swell_wave_scale(height, height_std_at_scale_1(swell))
     drive_clock(swell, scene, prop="time")
+    key_clock(obj, swell, scene)
     direction = values["sea_swell_direction"]
     obj[SWELL_PROPERTY] = [float(height), float(values["sea_swell_period"]), *map(float, direction[:2])]
     obj.update_tag()
