@@ -438,7 +438,7 @@ def test_in_a_strong_wind_the_foam_lies_in_streaks_along_it_not_cells(addon, eev
         assert off <= 15.0 and aspect >= 5.0
 
 
-def test_whitecap_foam_is_lit_by_the_sun_and_shaded_on_its_dark_side(sea_scene, render):
+def test_whitecap_foam_is_lit_by_the_sun_and_shaded_on_its_dark_side(addon, eevee, render):
     """The final picture's whitecaps (issue 58 point 1): lit by the sun and the sky, as a white
     Lambert surface is. 15 m/s, 12 m up, a sun 15 degrees up across the view (so the foam's faces
     turn to it and from it), three moments. Over the whitecap pixels (foam view 1), the picture's
@@ -448,7 +448,7 @@ def test_whitecap_foam_is_lit_by_the_sun_and_shaded_on_its_dark_side(sea_scene, 
     sky: numpy's Lambert model. The tenth of the foam most turned from the sun is darker than the
     tenth facing it most by at least half what the model says. Unlit foam (an emission, as on 4.2)
     has no slope and fails."""
-    scene = sea_scene
+    scene = _down_scene(eevee)  # its own: the streaks test before it reads a new home file
     sea = _foam_view_sea(scene, 15.0)
     normal_node, shade = harness.addon("nodes.sea.ocean_material").ocean_nodes(sea.active_material)
     debug, bump = shade.inputs["Debug View"], normal_node.inputs["Bump Strength"]
